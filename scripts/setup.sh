@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# Installs everything the demo and the test suite need. Idempotent: each step
+# checks first and does nothing when its tool is already present.
+#
+#   scripts/setup.sh            everything (tests)
+#   scripts/setup.sh --demo     only what the demo needs (cmake, C compiler)
+set -euo pipefail
+
+MODE="${1:-all}"
+CBINDGEN_VERSION=0.29.4
+PY_CANOPEN_VERSION=2.4.1
+PY_CAN_VERSION=4.6.1
+
+log() { printf '[setup] %s\n' "$*"; }
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+
+apt_install() {
+    local missing=()
+    for p in "$@"; do
+        dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
+    done
+    if [ "${#missing[@]}" -gt 0 ]; then
+        log "apt: ${missing[*]}"
+        $SUDO apt-get update -qq
+        DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+    fi
+}
+
+if ! command -v cargo >/dev/null 2>&1; then
+    if [ -x "$HOME/.cargo/bin/cargo" ]; then
+        export PATH="$HOME/.cargo/bin:$PATH"
+    else
+        echo "setup: a Rust toolchain (rustup, cargo) is required" >&2
+        exit 1
+    fi
+fi
+
+apt_install cmake make gcc libc6-dev python3 python3-pip
+if [ "$MODE" = "--demo" ]; then
+    log "demo prerequisites present"
+    exit 0
+fi
+
+apt_install gcc-arm-none-eabi binutils-arm-none-eabi \
+    gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user valgrind
+
+rustup component list --installed 2>/dev/null | grep -q '^rust-src' || { log "rustup: rust-src"; rustup component add rust-src; }
+rustup component list --installed 2>/dev/null | grep -q '^clippy' || { log "rustup: clippy"; rustup component add clippy; }
+rustup component list --installed 2>/dev/null | grep -q '^rustfmt' || { log "rustup: rustfmt"; rustup component add rustfmt; }
+rustup target list --installed | grep -q '^s390x-unknown-linux-gnu$' || { log "rustup: s390x target"; rustup target add s390x-unknown-linux-gnu; }
+if ! rustup run nightly cargo miri --version >/dev/null 2>&1; then
+    log "rustup: nightly with miri"
+    rustup toolchain install nightly --profile minimal --component miri,rust-src >/dev/null
+fi
+
+if ! cbindgen --version 2>/dev/null | grep -q "$CBINDGEN_VERSION"; then
+    log "cargo install cbindgen $CBINDGEN_VERSION"
+    cargo install cbindgen --version "$CBINDGEN_VERSION" --locked --quiet
+fi
+
+if ! python3 -c "import canopen, can, sys; sys.exit(0 if canopen.__version__ == '$PY_CANOPEN_VERSION' else 1)" 2>/dev/null; then
+    log "pip: canopen $PY_CANOPEN_VERSION, python-can $PY_CAN_VERSION"
+    python3 -m pip install --quiet --disable-pip-version-check \
+        "canopen==$PY_CANOPEN_VERSION" "python-can==$PY_CAN_VERSION"
+fi
+log "all prerequisites present"

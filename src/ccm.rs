@@ -1,0 +1,524 @@
+//! The CANopen device: the CCM layer that ties the object dictionary and
+//! the protocol modules together (`CcmInitCANopen`, `CcmConnectToNet`,
+//! `CcmProcess`, `CcmReadObject`, `CcmWriteObject`, NMT).
+//!
+//! # Driving the stack
+//! ```text
+//! let mut stack = Stack::new(od, node_id)?;      // CcmInitCANopen
+//! stack.connect();                               // CcmConnectToNet
+//! loop {
+//!     stack.begin_cycle(&mut port);              // CcmProcess ...
+//!     while let Some(ev) = stack.poll(&mut port, clock.now()) {
+//!         handle(ev);                            // ... calls the callbacks
+//!     }
+//! }
+//! ```
+//! `poll` hands out one [`Event`] at a time; the caller handles it before
+//! the next `poll`, so callbacks always observe the state the event
+//! describes and may call back into the stack.
+//!
+//! # One processing cycle
+//! 1. receive overrun reported by the driver (SRDO: `kCopSrdoOverrun`);
+//! 2. every received frame, oldest first (NMT, SRDO/GFC, SDO, guarding);
+//! 3. timers: SRDO (SCT, SRVT, program monitor), SDO timeout, heartbeat,
+//!    delayed emergencies.
+
+use crate::emcy::EmcyProducer;
+use crate::error::{CopKernel, CopResult, OdError};
+use crate::event::{Action, ActionQueue, Event, Internal, NmtEvent, NmtState};
+use crate::heartbeat::HeartbeatProducer;
+use crate::od::{ByteOrder, Object, ObjectDictionary, Staged, WriteHooks};
+use crate::port::{CanPort, Priority, RxFrame, Ticks};
+use crate::sdo::SdoServer;
+use crate::srdo::Srdo;
+use crate::wire::emcy::Emergency;
+use crate::wire::nmt::{self, NmtCs};
+
+/// Local NMT commands (`tNmtCommand`, `CcmNmtsExecCommand`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(u16)]
+pub enum NmtCommand {
+    /// kNmtCommInitialize.
+    Initialize = 0x0000,
+    /// kNmtCommStartRemoteNode / kNmtCommEnterOperational.
+    StartRemoteNode = 0x0001,
+    /// kNmtCommStopRemoteNode / kNmtCommEnterStopped.
+    StopRemoteNode = 0x0002,
+    /// kNmtCommEnterPreOperational.
+    EnterPreOperational = 0x0080,
+    /// kNmtCommResetNode.
+    ResetNode = 0x0081,
+    /// kNmtCommResetCommunication.
+    ResetCommunication = 0x0082,
+    /// kNmtCommInitBeforePost.
+    InitBeforePost = 0x0101,
+    /// kNmtCommEnterPostPreOperational.
+    EnterPostPreOperational = 0x0180,
+}
+
+impl NmtCommand {
+    /// Decodes a `tNmtCommand` value.
+    pub const fn from_u16(v: u16) -> Option<NmtCommand> {
+        Some(match v {
+            0x0000 => NmtCommand::Initialize,
+            0x0001 => NmtCommand::StartRemoteNode,
+            0x0002 => NmtCommand::StopRemoteNode,
+            0x0080 => NmtCommand::EnterPreOperational,
+            0x0081 => NmtCommand::ResetNode,
+            0x0082 => NmtCommand::ResetCommunication,
+            0x0101 => NmtCommand::InitBeforePost,
+            0x0180 => NmtCommand::EnterPostPreOperational,
+            _ => return None,
+        })
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Phase {
+    Overrun,
+    Receive,
+    Timers,
+    Idle,
+}
+
+/// A CANopen device.
+#[derive(Clone, Debug)]
+pub struct Stack {
+    od: ObjectDictionary,
+    node_id: u8,
+    state: NmtState,
+    connected: bool,
+    queue: ActionQueue,
+    phase: Phase,
+    guard_toggle: bool,
+    hb: HeartbeatProducer,
+    emcy: EmcyProducer,
+    sdo: SdoServer,
+    srdo: Srdo,
+}
+
+/// The module reactions to dictionary writes.
+struct Hooks<'a> {
+    state: NmtState,
+    node: u8,
+    now: Ticks,
+    srdo: &'a mut Srdo,
+    hb: &'a mut HeartbeatProducer,
+    emcy: &'a mut EmcyProducer,
+    sdo_changed: bool,
+}
+
+impl WriteHooks for Hooks<'_> {
+    fn check(
+        &mut self,
+        od: &ObjectDictionary,
+        obj: &Object,
+        value: &Staged,
+    ) -> Result<(), OdError> {
+        if (0x1300..=0x13FF).contains(&obj.index()) {
+            self.srdo.check_write(od, obj, value, self.state)?;
+        }
+        Ok(())
+    }
+
+    fn before_store(&mut self, od: &ObjectDictionary, obj: &Object, value: &Staged) {
+        if (0x1300..=0x13FF).contains(&obj.index()) {
+            self.srdo.before_store(od, obj, value);
+        }
+    }
+
+    fn after_store(&mut self, od: &ObjectDictionary, obj: &Object) {
+        match obj.index() {
+            crate::heartbeat::PRODUCER_TIME_INDEX => self.hb.reconfigure(od, self.now),
+            crate::emcy::COB_ID_INDEX | crate::emcy::INHIBIT_INDEX => {
+                self.emcy.reconfigure(od, self.node)
+            }
+            0x1200..=0x127F => self.sdo_changed = true,
+            0x1300..=0x13FF => self.srdo.after_store(od, obj),
+            _ => {}
+        }
+    }
+}
+
+impl Stack {
+    /// Creates the device (`CcmInitCANopen`): checks the node-ID (1..=127,
+    /// else `kCopInvalidNodeId`), lets the modules find their objects, and
+    /// queues the start-up sequence: kNmtEvEnterInitialising, then the reset
+    /// of application and communication objects with their NMT events. The
+    /// node stays in INITIALISATION until [`Stack::connect`].
+    pub fn new(od: ObjectDictionary, node_id: u8) -> CopResult<Stack> {
+        if !(1..=127).contains(&node_id) {
+            return Err(CopKernel::InvalidNodeId);
+        }
+        let mut s = Stack {
+            od,
+            node_id,
+            state: NmtState::Initialisation,
+            connected: false,
+            queue: ActionQueue::new(),
+            phase: Phase::Idle,
+            guard_toggle: false,
+            hb: HeartbeatProducer::new(),
+            emcy: EmcyProducer::new(),
+            sdo: SdoServer::new(),
+            srdo: Srdo::new(),
+        };
+        s.srdo.init(&s.od)?;
+        s.queue.emit(Event::Nmt(NmtEvent::EnterInitialising));
+        s.queue_reset(true);
+        Ok(s)
+    }
+
+    /// `CcmConnectToNet`: leave INITIALISATION (boot-up message, then
+    /// PRE-OPERATIONAL). `kCopNmtStateError` when already connected.
+    pub fn connect(&mut self) -> CopResult {
+        if self.connected {
+            return Err(CopKernel::NmtStateError);
+        }
+        self.connected = true;
+        if self.queue.is_empty() && self.state == NmtState::Initialisation {
+            self.queue_state(NmtState::PreOperational);
+        }
+        // Otherwise the reset sequence still queued ends in PRE-OPERATIONAL
+        // because `connected` is now set (see `run`).
+        Ok(())
+    }
+
+    /// The dictionary.
+    pub fn od(&self) -> &ObjectDictionary {
+        &self.od
+    }
+
+    /// Mutable access to the dictionary (dynamic OD).
+    pub fn od_mut(&mut self) -> &mut ObjectDictionary {
+        &mut self.od
+    }
+
+    /// This node's ID.
+    pub fn node_id(&self) -> u8 {
+        self.node_id
+    }
+
+    /// Current NMT state.
+    pub fn nmt_state(&self) -> NmtState {
+        self.state
+    }
+
+    /// True after [`Stack::connect`].
+    pub fn is_connected(&self) -> bool {
+        self.connected
+    }
+
+    /// The SRDO module.
+    pub fn srdo(&self) -> &Srdo {
+        &self.srdo
+    }
+
+    /// The SRDO module, mutable.
+    pub fn srdo_mut(&mut self) -> &mut Srdo {
+        &mut self.srdo
+    }
+
+    /// The heartbeat producer.
+    pub fn heartbeat(&self) -> &HeartbeatProducer {
+        &self.hb
+    }
+
+    /// The emergency producer.
+    pub fn emcy_mut(&mut self) -> &mut EmcyProducer {
+        &mut self.emcy
+    }
+
+    /// Starts a processing cycle (`CcmProcess`); then call [`Stack::poll`]
+    /// until it returns `None`.
+    pub fn begin_cycle(&mut self) {
+        self.phase = Phase::Overrun;
+        self.srdo.begin_cycle();
+    }
+
+    /// Runs the stack until it has an event for the application or nothing
+    /// left to do in this cycle.
+    pub fn poll(&mut self, port: &mut impl CanPort, now: Ticks) -> Option<Event> {
+        loop {
+            if let Some(a) = self.queue.pop() {
+                match a {
+                    Action::Emit(e) => return Some(e),
+                    Action::Do(i) => {
+                        self.run(i, port, now);
+                        continue;
+                    }
+                }
+            }
+            match self.phase {
+                Phase::Overrun => {
+                    if port.take_rx_overrun() && self.connected {
+                        self.srdo.on_rx_overrun();
+                    }
+                    self.phase = Phase::Receive;
+                }
+                Phase::Receive => match port.receive() {
+                    Some(f) => self.on_frame(port, &f, now),
+                    None => self.phase = Phase::Timers,
+                },
+                Phase::Timers => {
+                    if self.srdo.poll(&self.od, self.state, now, &mut self.queue) {
+                        self.timers(port, now);
+                        self.phase = Phase::Idle;
+                    }
+                }
+                Phase::Idle => return None,
+            }
+        }
+    }
+
+    /// Runs a whole cycle, handing each event to `handle`.
+    pub fn process(
+        &mut self,
+        port: &mut impl CanPort,
+        now: Ticks,
+        mut handle: impl FnMut(&mut Stack, Event),
+    ) {
+        self.begin_cycle();
+        while let Some(e) = self.poll(port, now) {
+            handle(self, e);
+        }
+    }
+
+    /// Hands out queued events without starting a cycle (after API calls
+    /// such as [`Stack::send_srdo`] or [`Stack::connect`]).
+    pub fn drain(&mut self, port: &mut impl CanPort, now: Ticks) -> Option<Event> {
+        let saved = self.phase;
+        self.phase = Phase::Idle;
+        let e = self.poll(port, now);
+        if self.phase == Phase::Idle {
+            self.phase = saved;
+        }
+        e
+    }
+
+    fn timers(&mut self, port: &mut impl CanPort, now: Ticks) {
+        if let Some(f) = self.sdo.poll(now) {
+            let _ = port.send(&f, Priority::Low);
+        }
+        if self.connected && self.state != NmtState::Initialisation {
+            self.hb.poll(port, self.node_id, self.state as u8, now);
+        }
+        self.emcy.poll(port, now);
+    }
+
+    fn on_frame(&mut self, port: &mut impl CanPort, rx: &RxFrame, now: Ticks) {
+        if !self.connected || self.state == NmtState::Initialisation {
+            return;
+        }
+        let f = &rx.frame;
+        if let Some(cmd) = nmt::decode_command(f) {
+            if cmd.node == 0 || cmd.node == self.node_id {
+                self.nmt_command(cmd.cs);
+            }
+            return;
+        }
+        if f.rtr && f.id == nmt::error_control_id(self.node_id) {
+            let reply = nmt::encode_guard_reply(self.node_id, self.state as u8, self.guard_toggle);
+            if port.send(&reply, Priority::Low).is_ok() {
+                self.guard_toggle = !self.guard_toggle;
+            }
+            return;
+        }
+        if self.state == NmtState::Stopped {
+            return;
+        }
+        if self
+            .srdo
+            .on_frame(&self.od, self.state, rx, &mut self.queue)
+        {
+            return;
+        }
+        if Some(f.id) == self.sdo.rx_id() {
+            let mut hooks = Hooks {
+                state: self.state,
+                node: self.node_id,
+                now,
+                srdo: &mut self.srdo,
+                hb: &mut self.hb,
+                emcy: &mut self.emcy,
+                sdo_changed: false,
+            };
+            let reply = self.sdo.on_frame(&self.od, &mut hooks, f, now);
+            let changed = hooks.sdo_changed;
+            if let Some(r) = reply {
+                let _ = port.send(&r, Priority::Low);
+            }
+            if changed {
+                self.sdo.reconfigure(&self.od, self.node_id);
+            }
+        }
+    }
+
+    fn nmt_command(&mut self, cs: NmtCs) {
+        match cs {
+            NmtCs::Start => self.queue_state(NmtState::Operational),
+            NmtCs::Stop => self.queue_state(NmtState::Stopped),
+            NmtCs::EnterPreOperational => self.queue_state(NmtState::PreOperational),
+            NmtCs::ResetNode => self.queue_reset(true),
+            NmtCs::ResetCommunication => self.queue_reset(false),
+        }
+    }
+
+    /// `CcmNmtsExecCommand`: a local NMT command.
+    pub fn exec_command(&mut self, cmd: NmtCommand) -> CopResult {
+        if !self.connected {
+            return Err(CopKernel::NmtStateError);
+        }
+        match cmd {
+            NmtCommand::StartRemoteNode => self.nmt_command(NmtCs::Start),
+            NmtCommand::StopRemoteNode => self.nmt_command(NmtCs::Stop),
+            NmtCommand::EnterPreOperational | NmtCommand::EnterPostPreOperational => {
+                self.nmt_command(NmtCs::EnterPreOperational)
+            }
+            NmtCommand::ResetNode => self.nmt_command(NmtCs::ResetNode),
+            NmtCommand::ResetCommunication => self.nmt_command(NmtCs::ResetCommunication),
+            NmtCommand::Initialize | NmtCommand::InitBeforePost => {
+                return Err(CopKernel::NmtUnknownCommand);
+            }
+        }
+        Ok(())
+    }
+
+    fn queue_state(&mut self, target: NmtState) {
+        if self.state == target {
+            return;
+        }
+        let ev = match target {
+            NmtState::Operational => NmtEvent::EnterOperational,
+            NmtState::Stopped => NmtEvent::EnterStopped,
+            NmtState::PreOperational => NmtEvent::EnterPreOperational,
+            NmtState::Initialisation => return,
+        };
+        self.queue.schedule(Internal::EnterState(target));
+        self.queue.emit(Event::Nmt(ev));
+    }
+
+    /// Queues a reset: node (application and communication objects) or
+    /// communication only. When the node is connected it ends with the
+    /// boot-up message and PRE-OPERATIONAL.
+    fn queue_reset(&mut self, node: bool) {
+        let q = &mut self.queue;
+        q.schedule(Internal::EnterState(NmtState::Initialisation));
+        if node {
+            q.schedule(Internal::RestoreApplication);
+            q.emit(Event::Nmt(NmtEvent::ResetNode));
+        }
+        q.emit(Event::Nmt(NmtEvent::PreResetCommunication));
+        q.schedule(Internal::RestoreCommunication);
+        q.emit(Event::Nmt(NmtEvent::ResetCommunication));
+        q.schedule(Internal::Reconfigure);
+        q.emit(Event::Nmt(NmtEvent::PostResetCommunication));
+    }
+
+    fn run(&mut self, i: Internal, port: &mut impl CanPort, now: Ticks) {
+        match i {
+            Internal::RestoreApplication => self.od.restore_defaults(0x2000, 0x9FFF),
+            Internal::RestoreCommunication => self.od.restore_defaults(0x1000, 0x1FFF),
+            Internal::Reconfigure => {
+                self.hb.reconfigure(&self.od, now);
+                self.emcy.reconfigure(&self.od, self.node_id);
+                self.sdo.reconfigure(&self.od, self.node_id);
+                self.srdo.reconfigure(&self.od, port);
+                if self.connected && self.state == NmtState::Initialisation {
+                    self.queue_state(NmtState::PreOperational);
+                }
+            }
+            Internal::EnterState(s) => self.enter_state(s, port, now),
+            Internal::SrdoCheckHandled(slot) => self.srdo.check_handled(slot, &mut self.queue),
+        }
+    }
+
+    fn enter_state(&mut self, s: NmtState, port: &mut impl CanPort, now: Ticks) {
+        let from = self.state;
+        self.state = s;
+        match s {
+            NmtState::Initialisation => {
+                self.hb.stop();
+                self.sdo.cancel();
+            }
+            NmtState::Stopped => self.sdo.cancel(),
+            _ => {}
+        }
+        if from == NmtState::Initialisation && s == NmtState::PreOperational {
+            // CiA 301: boot-up is 0x700 + node-ID with one byte 0x00.
+            let _ = port.send(&nmt::encode_bootup(self.node_id), Priority::High);
+            self.hb.start(now);
+        }
+        self.srdo.on_state(&self.od, s, self.node_id, now);
+    }
+
+    /// `CcmReadObject` / SDO-independent read.
+    pub fn read_object(
+        &self,
+        index: u16,
+        sub: u8,
+        order: ByteOrder,
+        out: &mut [u8],
+    ) -> Result<usize, OdError> {
+        self.od.read(index, sub, order, out)
+    }
+
+    /// `CcmWriteObject`: writes through the same checks and hooks as SDO.
+    pub fn write_object(
+        &mut self,
+        index: u16,
+        sub: u8,
+        order: ByteOrder,
+        data: &[u8],
+        now: Ticks,
+    ) -> Result<(), OdError> {
+        let mut hooks = Hooks {
+            state: self.state,
+            node: self.node_id,
+            now,
+            srdo: &mut self.srdo,
+            hb: &mut self.hb,
+            emcy: &mut self.emcy,
+            sdo_changed: false,
+        };
+        let r = self.od.write(index, sub, order, data, &mut hooks);
+        if hooks.sdo_changed {
+            self.sdo.reconfigure(&self.od, self.node_id);
+        }
+        r
+    }
+
+    /// `CcmSendEmergency`.
+    pub fn send_emergency(
+        &mut self,
+        port: &mut impl CanPort,
+        now: Ticks,
+        e: Emergency,
+    ) -> CopResult {
+        if !self.connected || self.state == NmtState::Stopped {
+            return Err(CopKernel::NmtStateError);
+        }
+        self.emcy.send(&self.od, port, now, e)
+    }
+
+    /// `CcmSendSrdo` for one SRDO (0 is handled by the caller, which
+    /// iterates so that each SRDO's events are handled in turn).
+    pub fn send_srdo(
+        &mut self,
+        port: &mut impl CanPort,
+        commu_index: u16,
+        now: Ticks,
+    ) -> CopResult {
+        self.srdo.send(
+            &self.od,
+            port,
+            self.state,
+            commu_index,
+            now,
+            &mut self.queue,
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,557 @@
+//! The object dictionary table format shared by C and Rust.
+//!
+//! `include/objdef.h` turns the application's unchanged `objdict.h` into
+//! arrays of these structures; Rust code builds the same arrays with the
+//! `const fn` constructors below; the dynamic OD builds them in its pool.
+//! The layout follows the SYS TEC `tObdEntry`/`tObdSubEntry` (same field
+//! order) with two additions: the storage kind and the variable size, so the
+//! core never has to guess how wide a C variable is.
+//!
+//! Raw pointers live only here. Every accessor the core uses is safe: the
+//! invariant "each pointer in a table is valid for the program's lifetime
+//! with the stated size" is established by the constructors (Rust) or by
+//! objdef.h (C, checked for plausibility in [`validate_part`]).
+
+use core::ffi::c_void;
+use core::sync::atomic::{AtomicPtr, AtomicU8, Ordering};
+
+use crate::config::ObdSizeRepr;
+use crate::od::{Access, DataType};
+
+/// `tObdSize`: BYTE, WORD or DWORD according to `OBD_SUPPORTED_OBJ_SIZE`.
+pub type ObdSize = ObdSizeRepr;
+
+/// Storage kinds (`m_bKind`).
+pub mod kind {
+    /// `m_pCurrent` points to `m_dwSize` bytes of RAM (the variable).
+    pub const RAM: u8 = 0;
+    /// Constant: the value is at `m_pDefault` (`m_dwSize` bytes).
+    pub const ROM: u8 = 1;
+    /// Visible string in RAM: `m_pCurrent` points to `m_dwSize + 1` bytes,
+    /// `m_pDefault` to the NUL-terminated default.
+    pub const RAM_VSTRING: u8 = 2;
+    /// Constant visible string: `m_pDefault` points to `m_dwSize` bytes.
+    pub const ROM_VSTRING: u8 = 3;
+    /// `m_pCurrent` points to a `tObdVarEntry` that the application fills
+    /// (USERDEF, DOMAIN, VARARRAY elements).
+    pub const VAR_ENTRY: u8 = 4;
+}
+
+/// `tObdCbParam`: what an OBD callback receives.
+#[repr(C)]
+#[derive(Debug)]
+pub struct ObdCbParam {
+    /// `tObdEvent` (kObdEv*).
+    pub m_ObdEvent: u8,
+    /// Index.
+    pub m_wIndex: u16,
+    /// Subindex.
+    pub m_bSubIndex: u8,
+    /// Event-dependent data (see cop.h).
+    pub m_pArg: *mut c_void,
+    /// SDO abort code the callback may set when it refuses.
+    pub m_dwAbortCode: u32,
+}
+
+/// `tObdCallback` (single-instance form).
+pub type ObdCallback = unsafe extern "C" fn(param: *mut ObdCbParam) -> u32;
+
+/// `tVarCallback` (single-instance form).
+pub type VarCallback = unsafe extern "C" fn(param: *mut c_void) -> u32;
+
+/// `tObdSubEntry` (with this library's `m_bKind` and `m_dwSize`).
+#[repr(C)]
+#[derive(Debug)]
+pub struct ObdSubEntry {
+    /// Subindex.
+    pub m_bSubIndex: u8,
+    /// `kObdTyp*`.
+    pub m_bType: u8,
+    /// `kObdAcc*`.
+    pub m_bAccess: u8,
+    /// One of [`kind`].
+    pub m_bKind: u8,
+    /// Size of the variable in bytes (`sizeof` of its C type); maximum
+    /// length for strings.
+    pub m_dwSize: u32,
+    /// Default value, native byte order; `{default, low, high}` when the
+    /// access has kObdAccRange; NULL for none.
+    pub m_pDefault: *const c_void,
+    /// Current value, see [`kind`].
+    pub m_pCurrent: *mut c_void,
+}
+
+/// `tObdEntry`.
+#[repr(C)]
+#[derive(Debug)]
+pub struct ObdEntry {
+    /// Index; 0xFFFF ends a table that is given without length.
+    pub m_wIndex: u16,
+    /// The subindex table.
+    pub m_pSubIndex: *const ObdSubEntry,
+    /// Number of entries in `m_pSubIndex`.
+    pub m_bCount: u8,
+    /// Application or stack callback, or NULL.
+    pub m_fpCallback: Option<ObdCallback>,
+}
+
+/// `tObdVarEntry`: a variable the application attaches at run time
+/// (`CcmDefineVarTab`). Fields are atomics of the same layout as the C
+/// pointer/size types so that the stack and the application may both write
+/// them without undefined behaviour.
+#[repr(C)]
+#[derive(Debug)]
+pub struct ObdVarEntry {
+    /// `void MEM* m_pData`.
+    pub m_pData: AtomicPtr<c_void>,
+    /// `tObdSize m_Size`.
+    pub m_Size: AtomicObdSize,
+    /// `tVarCallback m_fpCallback` (exists unless PDO_USE_STATIC_MAPPING).
+    pub m_fpCallback: AtomicPtr<c_void>,
+    /// `void GENERIC* m_pArg`.
+    pub m_pArg: AtomicPtr<c_void>,
+}
+
+/// Atomic with the layout of `tObdSize`.
+pub type AtomicObdSize = <ObdSize as AtomicOf>::Atomic;
+
+/// Maps an integer type to its atomic.
+pub trait AtomicOf {
+    /// The atomic with the same layout.
+    type Atomic;
+}
+impl AtomicOf for u8 {
+    type Atomic = core::sync::atomic::AtomicU8;
+}
+impl AtomicOf for u16 {
+    type Atomic = core::sync::atomic::AtomicU16;
+}
+impl AtomicOf for u32 {
+    type Atomic = core::sync::atomic::AtomicU32;
+}
+
+// SAFETY: the tables are immutable after construction; what they point to is
+// either constant data or atomics, so sharing them between contexts is sound.
+unsafe impl Sync for ObdSubEntry {}
+// SAFETY: as above.
+unsafe impl Sync for ObdEntry {}
+
+static_assertions::assert_eq_size!(AtomicPtr<c_void>, *mut c_void);
+static_assertions::assert_eq_align!(AtomicPtr<c_void>, *mut c_void);
+static_assertions::assert_eq_size!(AtomicObdSize, ObdSize);
+static_assertions::assert_eq_size!(Option<ObdCallback>, *const c_void);
+
+/// Where the value of one subindex lives, as the core sees it.
+#[derive(Clone, Copy, Debug)]
+pub enum Storage {
+    /// A variable in RAM (native byte order).
+    Ram(&'static [AtomicU8]),
+    /// A constant.
+    Rom(&'static [u8]),
+    /// A visible string in RAM: buffer of capacity + 1 (NUL) bytes.
+    RamString(&'static [AtomicU8]),
+    /// A constant visible string (without NUL).
+    RomString(&'static [u8]),
+    /// An application variable attached through a `tObdVarEntry`.
+    Var(&'static ObdVarEntry),
+}
+
+/// Argument handed to an OBD callback through `m_pArg`.
+pub enum CbArg<'a> {
+    /// NULL.
+    None,
+    /// Data (source data for kObdEvPreWrite, destination for PostRead, ...).
+    Data(&'a mut [u8]),
+    /// The object size (kObdEvInitWrite).
+    Size(&'a mut ObdSize),
+}
+
+impl ObdSubEntry {
+    /// A RAM variable owned by Rust code.
+    pub const fn ram(
+        sub: u8,
+        typ: DataType,
+        access: Access,
+        current: &'static [AtomicU8],
+        default: Option<&'static [u8]>,
+    ) -> ObdSubEntry {
+        ObdSubEntry {
+            m_bSubIndex: sub,
+            m_bType: typ.code(),
+            m_bAccess: access.0,
+            m_bKind: kind::RAM,
+            m_dwSize: current.len() as u32,
+            m_pDefault: match default {
+                Some(d) => d.as_ptr() as *const c_void,
+                None => core::ptr::null(),
+            },
+            m_pCurrent: current.as_ptr() as *mut c_void,
+        }
+    }
+
+    /// A RAM variable with a value range: `limits` holds default, low and
+    /// high value one after the other (each `current.len()` bytes, native).
+    pub const fn ram_range(
+        sub: u8,
+        typ: DataType,
+        access: Access,
+        current: &'static [AtomicU8],
+        limits: &'static [u8],
+    ) -> ObdSubEntry {
+        let mut e = Self::ram(
+            sub,
+            typ,
+            Access(access.0 | Access::RANGE),
+            current,
+            Some(limits),
+        );
+        e.m_bAccess |= Access::RANGE;
+        e
+    }
+
+    /// A constant.
+    pub const fn rom(sub: u8, typ: DataType, access: Access, value: &'static [u8]) -> ObdSubEntry {
+        ObdSubEntry {
+            m_bSubIndex: sub,
+            m_bType: typ.code(),
+            m_bAccess: (access.0 & !Access::WRITE) | Access::CONST,
+            m_bKind: kind::ROM,
+            m_dwSize: value.len() as u32,
+            m_pDefault: value.as_ptr() as *const c_void,
+            m_pCurrent: core::ptr::null_mut(),
+        }
+    }
+
+    /// A visible string in RAM; `buffer.len()` is the capacity plus one.
+    pub const fn ram_string(
+        sub: u8,
+        access: Access,
+        buffer: &'static [AtomicU8],
+        default: &'static [u8],
+    ) -> ObdSubEntry {
+        ObdSubEntry {
+            m_bSubIndex: sub,
+            m_bType: DataType::VString.code(),
+            m_bAccess: access.0,
+            m_bKind: kind::RAM_VSTRING,
+            m_dwSize: buffer.len().saturating_sub(1) as u32,
+            m_pDefault: default.as_ptr() as *const c_void,
+            m_pCurrent: buffer.as_ptr() as *mut c_void,
+        }
+    }
+
+    /// A constant visible string.
+    pub const fn rom_string(sub: u8, access: Access, value: &'static [u8]) -> ObdSubEntry {
+        ObdSubEntry {
+            m_bSubIndex: sub,
+            m_bType: DataType::VString.code(),
+            m_bAccess: (access.0 & !Access::WRITE) | Access::CONST,
+            m_bKind: kind::ROM_VSTRING,
+            m_dwSize: value.len() as u32,
+            m_pDefault: value.as_ptr() as *const c_void,
+            m_pCurrent: core::ptr::null_mut(),
+        }
+    }
+
+    /// An application-attached variable (USERDEF / DOMAIN).
+    pub const fn var(
+        sub: u8,
+        typ: DataType,
+        access: Access,
+        entry: &'static ObdVarEntry,
+        size: u32,
+        default: Option<&'static [u8]>,
+    ) -> ObdSubEntry {
+        ObdSubEntry {
+            m_bSubIndex: sub,
+            m_bType: typ.code(),
+            m_bAccess: access.0 | Access::VAR,
+            m_bKind: kind::VAR_ENTRY,
+            m_dwSize: size,
+            m_pDefault: match default {
+                Some(d) => d.as_ptr() as *const c_void,
+                None => core::ptr::null(),
+            },
+            m_pCurrent: entry as *const ObdVarEntry as *mut c_void,
+        }
+    }
+
+    /// Subindex.
+    #[inline]
+    pub fn sub(&self) -> u8 {
+        self.m_bSubIndex
+    }
+
+    /// Data type; `None` for a code this library does not know.
+    #[inline]
+    pub fn data_type(&self) -> Option<DataType> {
+        DataType::from_code(u16::from(self.m_bType))
+    }
+
+    /// Access attributes.
+    #[inline]
+    pub fn access(&self) -> Access {
+        Access(self.m_bAccess)
+    }
+
+    /// Variable size in bytes (capacity for strings).
+    #[inline]
+    pub fn size(&self) -> usize {
+        self.m_dwSize as usize
+    }
+
+    /// Storage of element `element` (0 for plain subindices; arrays use the
+    /// element number 0..n-1 with elements laid out one after the other).
+    pub fn storage(&self, element: usize) -> Option<Storage> {
+        let size = self.size();
+        let offset = element.checked_mul(size)?;
+        match self.m_bKind {
+            kind::RAM => {
+                if self.m_pCurrent.is_null() {
+                    return None;
+                }
+                // SAFETY: RAM entries point to an object of at least
+                // (element + 1) * m_dwSize bytes that lives for the whole
+                // program (a static in objdict.c or a Rust static); AtomicU8
+                // has the size and alignment of u8.
+                Some(Storage::Ram(unsafe {
+                    core::slice::from_raw_parts(
+                        (self.m_pCurrent as *const AtomicU8).add(offset),
+                        size,
+                    )
+                }))
+            }
+            kind::ROM => {
+                if self.m_pDefault.is_null() {
+                    return None;
+                }
+                // SAFETY: constant entries point to m_dwSize bytes of static
+                // constant data.
+                Some(Storage::Rom(unsafe {
+                    core::slice::from_raw_parts(self.m_pDefault as *const u8, size)
+                }))
+            }
+            kind::RAM_VSTRING => {
+                if self.m_pCurrent.is_null() {
+                    return None;
+                }
+                // SAFETY: string buffers are m_dwSize + 1 bytes of static RAM.
+                Some(Storage::RamString(unsafe {
+                    core::slice::from_raw_parts(self.m_pCurrent as *const AtomicU8, size + 1)
+                }))
+            }
+            kind::ROM_VSTRING => {
+                if self.m_pDefault.is_null() {
+                    return None;
+                }
+                // SAFETY: constant strings are m_dwSize bytes of static data.
+                Some(Storage::RomString(unsafe {
+                    core::slice::from_raw_parts(self.m_pDefault as *const u8, size)
+                }))
+            }
+            kind::VAR_ENTRY => {
+                if self.m_pCurrent.is_null() {
+                    return None;
+                }
+                // SAFETY: VAR_ENTRY entries point to an array of static
+                // tObdVarEntry of at least element + 1 elements.
+                Some(Storage::Var(unsafe {
+                    &*(self.m_pCurrent as *const ObdVarEntry).add(element)
+                }))
+            }
+            _ => None,
+        }
+    }
+
+    /// The default value (native order), `size()` bytes; the first of the
+    /// three values for range entries.
+    pub fn default_value(&self) -> Option<&'static [u8]> {
+        if self.m_pDefault.is_null() {
+            return None;
+        }
+        let n = match self.m_bKind {
+            kind::RAM_VSTRING => self.default_string_len(),
+            _ => self.size(),
+        };
+        // SAFETY: defaults are static constant data of at least n bytes (a
+        // NUL-terminated string for RAM strings, measured above).
+        Some(unsafe { core::slice::from_raw_parts(self.m_pDefault as *const u8, n) })
+    }
+
+    fn default_string_len(&self) -> usize {
+        let p = self.m_pDefault as *const u8;
+        let mut n = 0usize;
+        // SAFETY: the default of a RAM string is a NUL-terminated literal;
+        // the scan stops at the NUL or at the capacity, whichever is first.
+        while n < self.size() && unsafe { *p.add(n) } != 0 {
+            n += 1;
+        }
+        n
+    }
+
+    /// Low and high limit (native order) for kObdAccRange entries.
+    pub fn limits(&self) -> Option<(&'static [u8], &'static [u8])> {
+        if !self.access().ranged() || self.m_pDefault.is_null() {
+            return None;
+        }
+        let n = self.size();
+        // SAFETY: range entries point to three consecutive values of
+        // m_dwSize bytes (default, low, high).
+        let all = unsafe { core::slice::from_raw_parts(self.m_pDefault as *const u8, 3 * n) };
+        Some((all.get(n..2 * n)?, all.get(2 * n..3 * n)?))
+    }
+}
+
+impl ObdEntry {
+    /// A table entry built by Rust code.
+    pub const fn new(
+        index: u16,
+        subs: &'static [ObdSubEntry],
+        callback: Option<ObdCallback>,
+    ) -> ObdEntry {
+        ObdEntry {
+            m_wIndex: index,
+            m_pSubIndex: subs.as_ptr(),
+            m_bCount: subs.len() as u8,
+            m_fpCallback: callback,
+        }
+    }
+
+    /// Index.
+    #[inline]
+    pub fn index(&self) -> u16 {
+        self.m_wIndex
+    }
+
+    /// The subindex table.
+    #[inline]
+    pub fn subs(&self) -> &'static [ObdSubEntry] {
+        if self.m_pSubIndex.is_null() {
+            return &[];
+        }
+        // SAFETY: m_pSubIndex points to m_bCount static entries.
+        unsafe { core::slice::from_raw_parts(self.m_pSubIndex, usize::from(self.m_bCount)) }
+    }
+
+    /// True when the entry has a callback.
+    pub fn has_callback(&self) -> bool {
+        self.m_fpCallback.is_some()
+    }
+
+    /// Calls the entry's callback (if any) with `event`. `Err` carries the
+    /// abort code the callback set (0x08000020 when it refused without one)
+    /// and the `tCopKernel` it returned.
+    pub fn notify(&self, event: u8, sub: u8, arg: CbArg<'_>) -> Result<(), (u32, u32)> {
+        let Some(cb) = self.m_fpCallback else {
+            return Ok(());
+        };
+        let p = match arg {
+            CbArg::None => core::ptr::null_mut(),
+            CbArg::Data(d) => d.as_mut_ptr() as *mut c_void,
+            CbArg::Size(s) => s as *mut ObdSize as *mut c_void,
+        };
+        let mut param = ObdCbParam {
+            m_ObdEvent: event,
+            m_wIndex: self.m_wIndex,
+            m_bSubIndex: sub,
+            m_pArg: p,
+            m_dwAbortCode: 0,
+        };
+        // SAFETY: the callback is a C function of type tObdCallback that the
+        // application registered in its objdict.h; `param` is valid for the
+        // duration of the call and m_pArg points to live data of the kind the
+        // event documents.
+        let ret = unsafe { cb(&mut param) };
+        if ret == 0 {
+            Ok(())
+        } else {
+            let abort = if param.m_dwAbortCode != 0 {
+                param.m_dwAbortCode
+            } else {
+                crate::error::SdoAbort::CannotStore.code()
+            };
+            Err((abort, ret))
+        }
+    }
+}
+
+impl ObdVarEntry {
+    /// An empty entry (no variable attached).
+    pub const fn new() -> ObdVarEntry {
+        ObdVarEntry {
+            m_pData: AtomicPtr::new(core::ptr::null_mut()),
+            m_Size: AtomicObdSize::new(0),
+            m_fpCallback: AtomicPtr::new(core::ptr::null_mut()),
+            m_pArg: AtomicPtr::new(core::ptr::null_mut()),
+        }
+    }
+
+    /// Attaches a Rust-owned variable.
+    pub fn attach(&self, data: &'static [AtomicU8]) -> bool {
+        let Ok(size) = ObdSize::try_from(data.len()) else {
+            return false;
+        };
+        self.m_pData
+            .store(data.as_ptr() as *mut c_void, Ordering::Relaxed);
+        self.m_Size.store(size, Ordering::Relaxed);
+        true
+    }
+
+    /// The attached variable, if the application defined one.
+    pub fn data(&self) -> Option<&'static [AtomicU8]> {
+        let p = self.m_pData.load(Ordering::Relaxed);
+        if p.is_null() {
+            return None;
+        }
+        let n = usize::try_from(self.m_Size.load(Ordering::Relaxed)).unwrap_or(0);
+        // SAFETY: the application attached (CcmDefineVarTab / attach) a
+        // variable of m_Size bytes that outlives the stack; AtomicU8 has the
+        // layout of u8.
+        Some(unsafe { core::slice::from_raw_parts(p as *const AtomicU8, n) })
+    }
+
+    /// Sets the data size (domains whose length changed on write).
+    pub fn set_size(&self, size: usize) {
+        if let Ok(s) = ObdSize::try_from(size) {
+            self.m_Size.store(s, Ordering::Relaxed);
+        }
+    }
+
+    /// Calls the variable callback registered with the variable, if any.
+    pub fn notify(&self) -> u32 {
+        let f = self.m_fpCallback.load(Ordering::Relaxed);
+        if f.is_null() {
+            return 0;
+        }
+        // SAFETY: a non-NULL m_fpCallback was stored by CcmDefineVarTab from
+        // a tVarCallback function pointer of the application.
+        let cb: VarCallback = unsafe { core::mem::transmute::<*mut c_void, VarCallback>(f) };
+        // SAFETY: calling the application's callback with its own argument.
+        unsafe { cb(self.m_pArg.load(Ordering::Relaxed)) }
+    }
+}
+
+impl Default for ObdVarEntry {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Reads a C table that ends with an index of 0xFFFF (as objdef.h emits
+/// them) into a slice without the end marker.
+///
+/// # Safety
+/// `table` must point to a static array of `ObdEntry` terminated by an entry
+/// whose index is 0xFFFF.
+pub unsafe fn c_table(table: *const ObdEntry) -> &'static [ObdEntry] {
+    if table.is_null() {
+        return &[];
+    }
+    let mut n = 0usize;
+    // SAFETY: the caller guarantees an end marker; we stop there.
+    while unsafe { (*table.add(n)).m_wIndex } != 0xFFFF {
+        n += 1;
+    }
+    // SAFETY: the first n entries were just read and are valid statics.
+    unsafe { core::slice::from_raw_parts(table, n) }
+}

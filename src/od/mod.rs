@@ -1,0 +1,780 @@
+//! The object dictionary: lookup, access rights, byte order, value ranges,
+//! OBD callbacks.
+//!
+//! The tables come from the application's `objdict.h` (through
+//! `include/objdef.h`), from Rust code, or from the dynamic OD; all use the
+//! format of [`crate::ffi::od_table`]. Lookup is a binary search over the
+//! sorted part tables (O(log n)); unsorted tables are refused when the
+//! dictionary is created.
+//!
+//! The protocol modules never bypass this module: SDO, PDO, SRDO and the C
+//! API all read and write through [`ObjectDictionary::read`] and
+//! [`ObjectDictionary::write`], so access rights, ranges, module hooks and
+//! application callbacks apply to every path alike.
+
+mod types;
+pub mod value;
+
+pub use types::{Access, DataType, Encoding};
+
+pub use crate::ffi::od_table::{
+    CbArg, ObdCallback, ObdEntry, ObdSize, ObdSubEntry, ObdVarEntry, Storage, kind,
+};
+
+use crate::error::{CopKernel, OdError, SdoAbort};
+
+/// Byte order of data crossing the dictionary boundary.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ByteOrder {
+    /// The CPU's order and the C variable's width (`CcmReadObject`).
+    Native,
+    /// CANopen order: little-endian, type width (SDO, PDO, SRDO, DCF).
+    Wire,
+}
+
+/// OBD callback events (`tObdEvent`, kObdEv*).
+#[allow(missing_docs)]
+pub mod event {
+    pub const PRE_READ: u8 = 0x00;
+    pub const POST_READ: u8 = 0x01;
+    pub const PRE_WRITE: u8 = 0x02;
+    pub const POST_WRITE: u8 = 0x03;
+    pub const INIT_WRITE: u8 = 0x04;
+    pub const ABORT_SDO: u8 = 0x05;
+    pub const CHECK_EXIST: u8 = 0x06;
+    pub const WR_STRING_DOMAIN: u8 = 0x07;
+}
+
+/// Largest fixed-size value (numbers, TIME_OF_DAY) in bytes.
+pub const MAX_FIXED: usize = 8;
+
+/// The dictionary parts (`kObdPart*`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Part {
+    /// 0x1000–0x1FFF.
+    Generic,
+    /// 0x2000–0x5FFF.
+    Manufacturer,
+    /// 0x6000–0x9FFF.
+    Device,
+    /// Everything else and the dynamic OD.
+    User,
+}
+
+impl Part {
+    /// The part an index belongs to by its number.
+    pub const fn of(index: u16) -> Part {
+        match index {
+            0x1000..=0x1FFF => Part::Generic,
+            0x2000..=0x5FFF => Part::Manufacturer,
+            0x6000..=0x9FFF => Part::Device,
+            _ => Part::User,
+        }
+    }
+
+    const fn slot(self) -> usize {
+        match self {
+            Part::Generic => 0,
+            Part::Manufacturer => 1,
+            Part::Device => 2,
+            Part::User => 3,
+        }
+    }
+}
+
+/// One addressed subindex.
+#[derive(Clone, Copy, Debug)]
+pub struct Object {
+    entry: &'static ObdEntry,
+    desc: &'static ObdSubEntry,
+    typ: DataType,
+    sub: u8,
+    element: u8,
+}
+
+impl Object {
+    /// Index.
+    pub fn index(&self) -> u16 {
+        self.entry.index()
+    }
+    /// Subindex.
+    pub fn sub(&self) -> u8 {
+        self.sub
+    }
+    /// Data type.
+    pub fn data_type(&self) -> DataType {
+        self.typ
+    }
+    /// Access attributes.
+    pub fn access(&self) -> Access {
+        self.desc.access()
+    }
+    /// The index entry (callback).
+    pub fn entry(&self) -> &'static ObdEntry {
+        self.entry
+    }
+    /// The subindex description.
+    pub fn desc(&self) -> &'static ObdSubEntry {
+        self.desc
+    }
+    /// Where the value lives.
+    pub fn storage(&self) -> Result<Storage, OdError> {
+        self.desc
+            .storage(usize::from(self.element))
+            .ok_or(OdError::NO_VAR)
+    }
+    /// Width of the variable in memory (capacity for strings/domains).
+    pub fn native_size(&self) -> Result<usize, OdError> {
+        Ok(match self.storage()? {
+            Storage::Ram(m) => m.len(),
+            Storage::Rom(r) => r.len(),
+            Storage::RamString(b) => b.len().saturating_sub(1),
+            Storage::RomString(r) => r.len(),
+            Storage::Var(v) => v.data().ok_or(OdError::NO_VAR)?.len(),
+        })
+    }
+}
+
+/// A value checked and converted for storing.
+#[derive(Clone, Copy, Debug)]
+pub struct Staged {
+    native: [u8; MAX_FIXED],
+    len: usize,
+    fixed: bool,
+}
+
+impl Staged {
+    /// The native bytes of a fixed-size value (empty for strings/domains).
+    pub fn native(&self) -> &[u8] {
+        if self.fixed {
+            self.native.get(..self.len).unwrap_or(&[])
+        } else {
+            &[]
+        }
+    }
+    /// Length that will be stored.
+    pub fn len(&self) -> usize {
+        self.len
+    }
+    /// True for a zero-length write.
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+    /// The value as an unsigned integer (fixed-size values).
+    pub fn as_u64(&self) -> Option<u64> {
+        if self.fixed {
+            value::native_to_u64(self.native())
+        } else {
+            None
+        }
+    }
+}
+
+/// Module reactions to dictionary writes, implemented by the stack: the
+/// SRDO, PDO, SDO, NMT and EMCY modules check and follow their parameters
+/// through these hooks.
+pub trait WriteHooks {
+    /// Called after length and range checks, before the application's
+    /// kObdEvPreWrite callback. `Err` refuses the write; nothing changes.
+    fn check(&mut self, od: &ObjectDictionary, obj: &Object, value: &Staged)
+    -> Result<(), OdError>;
+    /// Called immediately before the value is stored (the write can no
+    /// longer fail): for example, invalidate 0x13FE.
+    fn before_store(&mut self, od: &ObjectDictionary, obj: &Object, value: &Staged);
+    /// Called after the value is stored.
+    fn after_store(&mut self, od: &ObjectDictionary, obj: &Object);
+}
+
+/// Hooks that do nothing (dictionary tests, tools).
+pub struct NoHooks;
+
+impl WriteHooks for NoHooks {
+    fn check(&mut self, _: &ObjectDictionary, _: &Object, _: &Staged) -> Result<(), OdError> {
+        Ok(())
+    }
+    fn before_store(&mut self, _: &ObjectDictionary, _: &Object, _: &Staged) {}
+    fn after_store(&mut self, _: &ObjectDictionary, _: &Object) {}
+}
+
+/// The object dictionary.
+#[derive(Clone, Copy, Debug)]
+pub struct ObjectDictionary {
+    parts: [&'static [ObdEntry]; 4],
+}
+
+/// Why a table was refused when the dictionary was created.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TableError {
+    /// `kCopObdIllegalPart` (order) or `kCopObdUnknownObjectType` (entry).
+    pub code: CopKernel,
+    /// The first offending index.
+    pub index: u16,
+    /// The offending subindex (0 for order errors of the index table).
+    pub sub: u8,
+}
+
+impl ObjectDictionary {
+    /// An empty dictionary.
+    pub const fn empty() -> Self {
+        ObjectDictionary {
+            parts: [&[], &[], &[], &[]],
+        }
+    }
+
+    /// A dictionary from the three static parts. Every table is checked:
+    /// indices strictly ascending (else `kCopObdIllegalPart`), subindices
+    /// strictly ascending, known data types, variable sizes that fit their
+    /// type and storage present (else `kCopObdUnknownObjectType`).
+    pub fn new(
+        generic: &'static [ObdEntry],
+        manufacturer: &'static [ObdEntry],
+        device: &'static [ObdEntry],
+    ) -> Result<Self, TableError> {
+        let od = ObjectDictionary {
+            parts: [generic, manufacturer, device, &[]],
+        };
+        for part in &od.parts {
+            validate_part(part)?;
+        }
+        Ok(od)
+    }
+
+    /// Replaces the user part (dynamic OD); checked like the static parts.
+    pub fn set_user_part(&mut self, user: &'static [ObdEntry]) -> Result<(), TableError> {
+        validate_part(user)?;
+        self.parts[3] = user;
+        Ok(())
+    }
+
+    /// The table of one part.
+    pub fn part(&self, part: Part) -> &'static [ObdEntry] {
+        self.parts.get(part.slot()).copied().unwrap_or(&[])
+    }
+
+    /// Number of index entries.
+    pub fn len(&self) -> usize {
+        self.parts.iter().map(|p| p.len()).sum()
+    }
+
+    /// True for an empty dictionary.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Every index entry, part by part.
+    pub fn entries(&self) -> impl Iterator<Item = &'static ObdEntry> + '_ {
+        self.parts.iter().flat_map(|p| p.iter())
+    }
+
+    /// The index entry of `index`.
+    pub fn find_entry(&self, index: u16) -> Option<&'static ObdEntry> {
+        let part = self.part(Part::of(index));
+        if let Ok(i) = part.binary_search_by_key(&index, |e| e.index()) {
+            return part.get(i);
+        }
+        let user = self.part(Part::User);
+        if Part::of(index) != Part::User {
+            if let Ok(i) = user.binary_search_by_key(&index, |e| e.index()) {
+                return user.get(i);
+            }
+        }
+        None
+    }
+
+    /// Looks up index and subindex.
+    pub fn find(&self, index: u16, sub: u8) -> Result<Object, OdError> {
+        let entry = self.find_entry(index).ok_or(OdError::INDEX)?;
+        let subs = entry.subs();
+        let (desc, element) = match subs.get(usize::from(sub)) {
+            Some(d) if d.sub() == sub => (d, 0u8),
+            _ => match subs.binary_search_by_key(&sub, |s| s.sub()) {
+                Ok(i) => (subs.get(i).ok_or(OdError::SUBINDEX)?, 0u8),
+                Err(_) => array_element(entry, sub).ok_or(OdError::SUBINDEX)?,
+            },
+        };
+        let typ = desc.data_type().ok_or(OdError::SUBINDEX)?;
+        Ok(Object {
+            entry,
+            desc,
+            typ,
+            sub,
+            element,
+        })
+    }
+
+    /// Highest subindex an entry answers (for EDS export and SDO checks).
+    pub fn sub_count(&self, entry: &'static ObdEntry) -> usize {
+        let subs = entry.subs();
+        match subs.last() {
+            Some(last) if last.access().0 & Access::ARRAY != 0 => {
+                usize::from(last.sub()) + array_len(entry).saturating_sub(1)
+            }
+            Some(last) => usize::from(last.sub()) + 1,
+            None => 0,
+        }
+    }
+
+    /// Current size of a value in `order` (strings: their length).
+    pub fn size_of(&self, obj: &Object, order: ByteOrder) -> Result<usize, OdError> {
+        let native = obj.native_size()?;
+        Ok(match (order, obj.typ.wire_size()) {
+            (ByteOrder::Wire, Some(w)) => w,
+            _ => match obj.storage()? {
+                Storage::RamString(b) => string_len(b),
+                _ => native,
+            },
+        })
+    }
+
+    /// Reads a value without access checks or callbacks (stack-internal use:
+    /// CRC, mapping, diagnostics). Returns the number of bytes written.
+    pub fn peek(&self, obj: &Object, order: ByteOrder, out: &mut [u8]) -> Result<usize, OdError> {
+        let mut tmp = [0u8; MAX_FIXED];
+        let fixed = obj.typ.wire_size().is_some();
+        match obj.storage()? {
+            Storage::Ram(m) | Storage::RamString(m) if fixed => {
+                let t = tmp.get_mut(..m.len()).ok_or(OdError::LENGTH)?;
+                value::load(m, t);
+                self.finish_read(obj, order, t, out)
+            }
+            Storage::Rom(r) | Storage::RomString(r) => self.finish_read(obj, order, r, out),
+            Storage::Ram(m) => {
+                let dst = out.get_mut(..m.len()).ok_or(OdError::TOO_LONG)?;
+                value::load(m, dst);
+                Ok(m.len())
+            }
+            Storage::RamString(b) => {
+                let n = string_len(b);
+                let dst = out.get_mut(..n).ok_or(OdError::TOO_LONG)?;
+                value::load(b.get(..n).unwrap_or(&[]), dst);
+                Ok(n)
+            }
+            Storage::Var(v) => {
+                let m = v.data().ok_or(OdError::NO_VAR)?;
+                if fixed {
+                    let t = tmp.get_mut(..m.len()).ok_or(OdError::LENGTH)?;
+                    value::load(m, t);
+                    self.finish_read(obj, order, t, out)
+                } else {
+                    let dst = out.get_mut(..m.len()).ok_or(OdError::TOO_LONG)?;
+                    value::load(m, dst);
+                    Ok(m.len())
+                }
+            }
+        }
+    }
+
+    fn finish_read(
+        &self,
+        obj: &Object,
+        order: ByteOrder,
+        native: &[u8],
+        out: &mut [u8],
+    ) -> Result<usize, OdError> {
+        match order {
+            ByteOrder::Wire => value::native_to_wire(obj.typ, native, out),
+            ByteOrder::Native => {
+                let dst = out.get_mut(..native.len()).ok_or(OdError::TOO_LONG)?;
+                dst.copy_from_slice(native);
+                Ok(native.len())
+            }
+        }
+    }
+
+    /// Reads a numeric value as an unsigned integer (stack-internal).
+    pub fn read_uint(&self, index: u16, sub: u8) -> Result<u64, OdError> {
+        let obj = self.find(index, sub)?;
+        let mut buf = [0u8; MAX_FIXED];
+        let n = self.peek(&obj, ByteOrder::Wire, &mut buf)?;
+        Ok(value::le_to_u64(buf.get(..n).unwrap_or(&[])))
+    }
+
+    /// Reads an object for an application or SDO client: existence and
+    /// read access are checked and the entry's callback sees
+    /// kObdEvCheckExist, kObdEvPreRead and kObdEvPostRead.
+    pub fn read(
+        &self,
+        index: u16,
+        sub: u8,
+        order: ByteOrder,
+        out: &mut [u8],
+    ) -> Result<usize, OdError> {
+        let obj = self.locate(index, sub)?;
+        if !obj.access().readable() {
+            return Err(OdError::READ);
+        }
+        self.callback(&obj, event::PRE_READ, CbArg::None)?;
+        let n = self.peek(&obj, order, out)?;
+        self.callback(
+            &obj,
+            event::POST_READ,
+            CbArg::Data(out.get_mut(..n).unwrap_or(&mut [])),
+        )?;
+        Ok(n)
+    }
+
+    /// Finds an object and asks its callback whether it exists.
+    pub fn locate(&self, index: u16, sub: u8) -> Result<Object, OdError> {
+        let obj = self.find(index, sub)?;
+        obj.entry
+            .notify(event::CHECK_EXIST, sub, CbArg::None)
+            .map_err(|_| OdError::SUBINDEX)?;
+        Ok(obj)
+    }
+
+    /// Checks that a write of `size` bytes can start (SDO initiate): object
+    /// exists, is writable and the size fits; the callback sees
+    /// kObdEvInitWrite.
+    pub fn begin_write(&self, index: u16, sub: u8, size: Option<usize>) -> Result<Object, OdError> {
+        let obj = self.locate(index, sub)?;
+        if !obj.access().writable() {
+            return Err(OdError::WRITE);
+        }
+        if let Some(n) = size {
+            self.check_length(&obj, ByteOrder::Wire, n)?;
+        }
+        let mut s: ObdSize = ObdSize::try_from(obj.native_size()?).unwrap_or(ObdSize::MAX);
+        self.callback(&obj, event::INIT_WRITE, CbArg::Size(&mut s))?;
+        Ok(obj)
+    }
+
+    fn check_length(&self, obj: &Object, order: ByteOrder, n: usize) -> Result<(), OdError> {
+        let exact = match order {
+            ByteOrder::Wire => obj.typ.wire_size(),
+            ByteOrder::Native => obj.typ.wire_size().map(|_| obj.native_size().unwrap_or(0)),
+        };
+        match exact {
+            Some(e) if n > e => Err(OdError::TOO_LONG),
+            Some(e) if n < e => Err(OdError::TOO_SHORT),
+            Some(_) => Ok(()),
+            None => {
+                if n > obj.native_size()? {
+                    Err(OdError::TOO_LONG)
+                } else {
+                    Ok(())
+                }
+            }
+        }
+    }
+
+    /// Checks and converts a value for `obj` without storing it.
+    pub fn stage(&self, obj: &Object, order: ByteOrder, data: &[u8]) -> Result<Staged, OdError> {
+        self.check_length(obj, order, data.len())?;
+        let mut staged = Staged {
+            native: [0; MAX_FIXED],
+            len: data.len(),
+            fixed: false,
+        };
+        if obj.typ.wire_size().is_some() {
+            let size = obj.native_size()?;
+            let dst = staged.native.get_mut(..size).ok_or(OdError::LENGTH)?;
+            match order {
+                ByteOrder::Wire => value::wire_to_native(obj.typ, data, size, dst)?,
+                ByteOrder::Native => dst.copy_from_slice(data),
+            }
+            staged.len = size;
+            staged.fixed = true;
+            if let Some((low, high)) = obj.desc.limits() {
+                let v = staged.native();
+                if value::compare(obj.typ, v, low) == Some(core::cmp::Ordering::Less) {
+                    return Err(OdError::TOO_LOW);
+                }
+                if value::compare(obj.typ, v, high) == Some(core::cmp::Ordering::Greater) {
+                    return Err(OdError::TOO_HIGH);
+                }
+            }
+            if obj.typ == DataType::Bool && value::native_to_u64(staged.native()).unwrap_or(0) > 1 {
+                return Err(OdError::new(
+                    CopKernel::ObdValueToHigh,
+                    SdoAbort::ValueTooHigh,
+                ));
+            }
+        }
+        Ok(staged)
+    }
+
+    /// Writes an object for an application or SDO client: existence, write
+    /// access, length and range are checked, then the module hooks and the
+    /// entry's callback (kObdEvPreWrite) may refuse; only then is the value
+    /// stored, all at once, and kObdEvPostWrite follows. A refused write
+    /// changes nothing.
+    pub fn write(
+        &self,
+        index: u16,
+        sub: u8,
+        order: ByteOrder,
+        data: &[u8],
+        hooks: &mut impl WriteHooks,
+    ) -> Result<(), OdError> {
+        let obj = self.begin_write(index, sub, None)?;
+        let staged = self.stage(&obj, order, data)?;
+        hooks.check(self, &obj, &staged)?;
+        self.pre_write_callback(&obj, &staged, data)?;
+        hooks.before_store(self, &obj, &staged);
+        self.store(&obj, &staged, data)?;
+        hooks.after_store(self, &obj);
+        if let Ok(Storage::Var(v)) = obj.storage() {
+            v.notify();
+        }
+        self.post_write_callback(&obj);
+        Ok(())
+    }
+
+    fn pre_write_callback(
+        &self,
+        obj: &Object,
+        staged: &Staged,
+        data: &[u8],
+    ) -> Result<(), OdError> {
+        if !obj.entry.has_callback() {
+            return Ok(());
+        }
+        if staged.fixed {
+            let mut copy = staged.native;
+            let n = staged.len;
+            self.callback(
+                obj,
+                event::PRE_WRITE,
+                CbArg::Data(copy.get_mut(..n).unwrap_or(&mut [])),
+            )
+        } else {
+            // Strings and domains: the callback sees a copy of the source data
+            // (at most one SDO buffer; longer data is passed without copy).
+            let mut copy = [0u8; crate::config::SDOS_BUFFER_SIZE];
+            match copy.get_mut(..data.len()) {
+                Some(c) => {
+                    c.copy_from_slice(data);
+                    self.callback(obj, event::PRE_WRITE, CbArg::Data(c))
+                }
+                None => self.callback(obj, event::PRE_WRITE, CbArg::None),
+            }
+        }
+    }
+
+    fn post_write_callback(&self, obj: &Object) {
+        // The write has happened; a refusal at this point cannot undo it and
+        // is ignored (SYS TEC semantics: kObdEvPostWrite is a notification).
+        let _ = self.callback(obj, event::POST_WRITE, CbArg::None);
+    }
+
+    fn callback(&self, obj: &Object, ev: u8, arg: CbArg<'_>) -> Result<(), OdError> {
+        obj.entry
+            .notify(ev, obj.sub, arg)
+            .map_err(|(abort, ret)| OdError {
+                kernel: kernel_from_callback(ret),
+                abort,
+            })
+    }
+
+    /// Stores a staged value (no checks, no callbacks).
+    pub fn store(&self, obj: &Object, staged: &Staged, data: &[u8]) -> Result<(), OdError> {
+        match obj.storage()? {
+            Storage::Ram(m) if staged.fixed => value::store(m, staged.native()),
+            Storage::Ram(m) => {
+                // Byte arrays without terminator: write and zero the rest so
+                // that the stored value is exactly the written one.
+                let n = data.len().min(m.len());
+                value::store(m.get(..n).unwrap_or(&[]), data);
+                for b in m.get(n..).unwrap_or(&[]) {
+                    b.store(0, core::sync::atomic::Ordering::Relaxed);
+                }
+            }
+            Storage::RamString(b) => {
+                let n = data.len().min(b.len().saturating_sub(1));
+                value::store(b.get(..n).unwrap_or(&[]), data);
+                if let Some(t) = b.get(n) {
+                    t.store(0, core::sync::atomic::Ordering::Relaxed);
+                }
+            }
+            Storage::Var(v) => {
+                let m = v.data().ok_or(OdError::NO_VAR)?;
+                if staged.fixed {
+                    value::store(m, staged.native());
+                } else {
+                    value::store(m.get(..data.len()).unwrap_or(m), data);
+                }
+            }
+            Storage::Rom(_) | Storage::RomString(_) => return Err(OdError::WRITE),
+        }
+        Ok(())
+    }
+
+    /// Writes a value bypassing access rights and callbacks (the stack's
+    /// own bookkeeping, e.g. 0x13FE = 0 or 0x1001). Fixed-size types only.
+    pub fn poke_uint(&self, index: u16, sub: u8, v: u64) -> Result<(), OdError> {
+        let obj = self.find(index, sub)?;
+        let wire = obj.typ.wire_size().ok_or(OdError::LENGTH)?;
+        let bytes = v.to_le_bytes();
+        let staged = self.stage_unchecked(&obj, bytes.get(..wire).unwrap_or(&[]))?;
+        self.store(&obj, &staged, &[])
+    }
+
+    fn stage_unchecked(&self, obj: &Object, wire: &[u8]) -> Result<Staged, OdError> {
+        let size = obj.native_size()?;
+        let mut staged = Staged {
+            native: [0; MAX_FIXED],
+            len: size,
+            fixed: true,
+        };
+        value::wire_to_native(
+            obj.typ,
+            wire,
+            size,
+            staged.native.get_mut(..size).ok_or(OdError::LENGTH)?,
+        )?;
+        Ok(staged)
+    }
+
+    /// Restores the default of every RAM subindex with an index in
+    /// `from..=to` (NMT reset node / reset communication). Subindices
+    /// without default keep their value; attached application variables
+    /// (USERDEF) get their default when one is declared.
+    pub fn restore_defaults(&self, from: u16, to: u16) {
+        for entry in self.entries().filter(|e| (from..=to).contains(&e.index())) {
+            let subs = entry.subs();
+            for desc in subs {
+                let elements = if desc.access().0 & Access::ARRAY != 0 {
+                    array_len(entry)
+                } else {
+                    1
+                };
+                for el in 0..elements {
+                    restore_one(desc, el);
+                }
+            }
+        }
+    }
+}
+
+fn restore_one(desc: &ObdSubEntry, element: usize) {
+    let Some(def) = desc.default_value() else {
+        return;
+    };
+    match desc.storage(element) {
+        Some(Storage::Ram(m)) => {
+            if def.len() == m.len() {
+                value::store(m, def);
+            }
+        }
+        Some(Storage::RamString(b)) => {
+            let n = def.len().min(b.len().saturating_sub(1));
+            value::store(b.get(..n).unwrap_or(&[]), def);
+            for t in b.get(n..).unwrap_or(&[]) {
+                t.store(0, core::sync::atomic::Ordering::Relaxed);
+            }
+        }
+        Some(Storage::Var(v)) => {
+            if let Some(m) = v.data() {
+                if m.len() == def.len() {
+                    value::store(m, def);
+                }
+            }
+        }
+        _ => {}
+    }
+}
+
+/// Maps the `tCopKernel` an application callback returned: its own code if
+/// it is a known OBD code, otherwise `kCopObdAccessViolation`.
+fn kernel_from_callback(ret: u32) -> CopKernel {
+    match ret {
+        0x31 => CopKernel::ObdIndexNotExist,
+        0x32 => CopKernel::ObdSubindexNotExist,
+        0x33 => CopKernel::ObdReadViolation,
+        0x34 => CopKernel::ObdWriteViolation,
+        0x38 => CopKernel::ObdValueToLow,
+        0x39 => CopKernel::ObdValueToHigh,
+        0x3A => CopKernel::ObdValueLengthError,
+        _ => CopKernel::ObdAccessViolation,
+    }
+}
+
+/// Length of a NUL-terminated string in a buffer of capacity + 1 bytes.
+fn string_len(buf: &[core::sync::atomic::AtomicU8]) -> usize {
+    let cap = buf.len().saturating_sub(1);
+    buf.iter()
+        .take(cap)
+        .position(|b| b.load(core::sync::atomic::Ordering::Relaxed) == 0)
+        .unwrap_or(cap)
+}
+
+/// Number of elements of an array entry: the value of its subindex 0.
+fn array_len(entry: &ObdEntry) -> usize {
+    let Some(first) = entry.subs().first() else {
+        return 0;
+    };
+    let mut b = [0u8; 1];
+    match first.storage(0) {
+        Some(Storage::Rom(r)) => r.first().map_or(0, |v| usize::from(*v)),
+        Some(Storage::Ram(m)) => {
+            value::load(m.get(..1).unwrap_or(&[]), &mut b);
+            usize::from(b[0])
+        }
+        _ => 0,
+    }
+}
+
+/// The array element `sub` addresses, if the entry's last subindex is an
+/// array (kObdAccArray) that covers it.
+fn array_element(entry: &'static ObdEntry, sub: u8) -> Option<(&'static ObdSubEntry, u8)> {
+    let last = entry.subs().last()?;
+    if last.access().0 & Access::ARRAY == 0 || sub < last.sub() {
+        return None;
+    }
+    let element = sub - last.sub();
+    let count = array_len(entry);
+    // Subindex 1 is element 0; the array has `count` elements.
+    if usize::from(sub) > count {
+        return None;
+    }
+    Some((last, element))
+}
+
+fn validate_part(part: &[ObdEntry]) -> Result<(), TableError> {
+    let mut prev: Option<u16> = None;
+    for e in part {
+        if prev.is_some_and(|p| p >= e.index()) {
+            return Err(TableError {
+                code: CopKernel::ObdIllegalPart,
+                index: e.index(),
+                sub: 0,
+            });
+        }
+        prev = Some(e.index());
+        let mut prev_sub: Option<u8> = None;
+        for s in e.subs() {
+            let bad = |sub| TableError {
+                code: CopKernel::ObdUnknownObjectType,
+                index: e.index(),
+                sub,
+            };
+            if prev_sub.is_some_and(|p| p >= s.sub()) {
+                return Err(TableError {
+                    code: CopKernel::ObdIllegalPart,
+                    index: e.index(),
+                    sub: s.sub(),
+                });
+            }
+            prev_sub = Some(s.sub());
+            let typ = s.data_type().ok_or(bad(s.sub()))?;
+            let storage_ok = match s.m_bKind {
+                kind::RAM | kind::RAM_VSTRING | kind::VAR_ENTRY => !s.m_pCurrent.is_null(),
+                kind::ROM | kind::ROM_VSTRING => !s.m_pDefault.is_null(),
+                _ => false,
+            };
+            if !storage_ok {
+                return Err(bad(s.sub()));
+            }
+            if matches!(s.m_bKind, kind::RAM | kind::ROM) && !value::size_fits(typ, s.size()) {
+                return Err(bad(s.sub()));
+            }
+            if s.access().ranged() && s.m_pDefault.is_null() {
+                return Err(bad(s.sub()));
+            }
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,332 @@
+//! A simulated CAN bus for tests and examples (host builds, `std` feature).
+//!
+//! Several nodes share one bus; a frame sent by one node is delivered, in
+//! sending order, to every other node's receive queue with the bus time as
+//! its receive timestamp. The clock only moves when told to
+//! ([`SimBus::advance_ms`]), so every run is reproducible. Each frame is
+//! recorded in candump format (`  can0  702   [1]  00`). A fault filter can
+//! drop, change or duplicate frames on their way (fault injection).
+
+use std::cell::RefCell;
+use std::collections::VecDeque;
+use std::rc::Rc;
+
+use crate::error::{CopKernel, CopResult};
+use crate::port::{CanFrame, CanPort, Clock, Priority, RxFrame, Ticks};
+
+/// What a fault filter does with a frame.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Delivery {
+    /// Deliver as is (possibly modified in place by the filter).
+    Deliver,
+    /// Lose the frame.
+    Drop,
+    /// Deliver it twice.
+    Duplicate,
+}
+
+/// A fault filter: sees (sender node, frame) and may modify the frame.
+pub type FaultFilter = Box<dyn FnMut(usize, &mut CanFrame) -> Delivery>;
+
+struct Node {
+    rx: VecDeque<RxFrame>,
+    capacity: usize,
+    overrun: bool,
+    tx_refuse: usize,
+}
+
+struct Bus {
+    now: Ticks,
+    nodes: Vec<Node>,
+    trace: Vec<String>,
+    echo: bool,
+    filter: Option<FaultFilter>,
+    sent: Vec<(usize, Ticks, CanFrame)>,
+}
+
+/// The shared bus.
+#[derive(Clone)]
+pub struct SimBus(Rc<RefCell<Bus>>);
+
+/// One node's connection to the bus: a [`CanPort`] and a [`Clock`].
+#[derive(Clone)]
+pub struct SimPort {
+    bus: SimBus,
+    node: usize,
+}
+
+/// Formats a frame like candump: `  can0  702   [1]  00`.
+pub fn candump(f: &CanFrame) -> String {
+    let id = if f.id.is_extended() {
+        format!("{:08X}", f.id.id())
+    } else {
+        format!("{:03X}", f.id.id())
+    };
+    let data = if f.rtr {
+        "remote request".to_string()
+    } else {
+        f.payload()
+            .iter()
+            .map(|b| format!("{b:02X}"))
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    format!("  can0  {id}   [{}]  {data}", f.len)
+}
+
+impl Default for SimBus {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl SimBus {
+    /// An empty bus at time 0.
+    pub fn new() -> SimBus {
+        SimBus(Rc::new(RefCell::new(Bus {
+            now: Ticks(0),
+            nodes: Vec::new(),
+            trace: Vec::new(),
+            echo: false,
+            filter: None,
+            sent: Vec::new(),
+        })))
+    }
+
+    /// Starts the clock at `t` (wrap tests).
+    pub fn set_time(&self, t: Ticks) {
+        self.0.borrow_mut().now = t;
+    }
+
+    /// Attaches a node with a receive queue of `capacity` frames (a full
+    /// queue loses the newest frame and reports an overrun).
+    pub fn attach(&self, capacity: usize) -> SimPort {
+        let mut b = self.0.borrow_mut();
+        b.nodes.push(Node {
+            rx: VecDeque::new(),
+            capacity,
+            overrun: false,
+            tx_refuse: 0,
+        });
+        SimPort {
+            bus: self.clone(),
+            node: b.nodes.len() - 1,
+        }
+    }
+
+    /// The current bus time.
+    pub fn now(&self) -> Ticks {
+        self.0.borrow().now
+    }
+
+    /// Advances the clock by `ms` milliseconds.
+    pub fn advance_ms(&self, ms: u32) {
+        self.advance_ticks(crate::port::ms_to_ticks(ms));
+    }
+
+    /// Advances the clock by `ticks` (100 µs each).
+    pub fn advance_ticks(&self, ticks: u32) {
+        let mut b = self.0.borrow_mut();
+        b.now = b.now.plus(ticks);
+    }
+
+    /// Prints each frame to stdout as it is sent.
+    pub fn set_echo(&self, on: bool) {
+        self.0.borrow_mut().echo = on;
+    }
+
+    /// Installs (or removes) a fault filter.
+    pub fn set_filter(&self, f: Option<FaultFilter>) {
+        self.0.borrow_mut().filter = f;
+    }
+
+    /// Makes node `node` refuse its next `n` transmissions (driver buffer
+    /// full, `kCopCdrvTxBuffHighOverrun`).
+    pub fn refuse_tx(&self, node: usize, n: usize) {
+        if let Some(x) = self.0.borrow_mut().nodes.get_mut(node) {
+            x.tx_refuse = n;
+        }
+    }
+
+    /// The candump trace so far.
+    pub fn trace(&self) -> Vec<String> {
+        self.0.borrow().trace.clone()
+    }
+
+    /// Every frame sent so far: (sender, time, frame).
+    pub fn sent(&self) -> Vec<(usize, Ticks, CanFrame)> {
+        self.0.borrow().sent.clone()
+    }
+
+    /// Forgets the trace and the sent list.
+    pub fn clear_trace(&self) {
+        let mut b = self.0.borrow_mut();
+        b.trace.clear();
+        b.sent.clear();
+    }
+
+    /// Puts a frame on the bus as if sent by an outside node (`usize::MAX`):
+    /// every attached node receives it.
+    pub fn inject(&self, frame: CanFrame) {
+        self.transmit(usize::MAX, frame);
+    }
+
+    fn transmit(&self, from: usize, mut frame: CanFrame) {
+        let mut b = self.0.borrow_mut();
+        let delivery = match b.filter.as_mut() {
+            Some(f) => f(from, &mut frame),
+            None => Delivery::Deliver,
+        };
+        let line = candump(&frame);
+        if b.echo {
+            println!("{line}");
+        }
+        b.trace.push(line);
+        let now = b.now;
+        b.sent.push((from, now, frame));
+        let copies = match delivery {
+            Delivery::Deliver => 1,
+            Delivery::Drop => 0,
+            Delivery::Duplicate => 2,
+        };
+        for (i, n) in b.nodes.iter_mut().enumerate() {
+            if i == from {
+                continue;
+            }
+            for _ in 0..copies {
+                if n.rx.len() >= n.capacity {
+                    n.overrun = true;
+                } else {
+                    n.rx.push_back(RxFrame { frame, time: now });
+                }
+            }
+        }
+    }
+}
+
+impl SimPort {
+    /// The bus this port is attached to.
+    pub fn bus(&self) -> &SimBus {
+        &self.bus
+    }
+
+    /// This node's number on the bus.
+    pub fn node(&self) -> usize {
+        self.node
+    }
+
+    /// Frames waiting in this node's receive queue.
+    pub fn pending(&self) -> usize {
+        self.bus
+            .0
+            .borrow()
+            .nodes
+            .get(self.node)
+            .map_or(0, |n| n.rx.len())
+    }
+}
+
+impl CanPort for SimPort {
+    fn send(&mut self, frame: &CanFrame, prio: Priority) -> CopResult {
+        {
+            let mut b = self.bus.0.borrow_mut();
+            if let Some(n) = b.nodes.get_mut(self.node) {
+                if n.tx_refuse > 0 {
+                    n.tx_refuse -= 1;
+                    return Err(match prio {
+                        Priority::High => CopKernel::CdrvTxBuffHighOverrun,
+                        Priority::Low => CopKernel::CdrvTxBuffLowOverrun,
+                    });
+                }
+            }
+        }
+        self.bus.transmit(self.node, *frame);
+        Ok(())
+    }
+
+    fn receive(&mut self) -> Option<RxFrame> {
+        self.bus
+            .0
+            .borrow_mut()
+            .nodes
+            .get_mut(self.node)
+            .and_then(|n| n.rx.pop_front())
+    }
+
+    fn take_rx_overrun(&mut self) -> bool {
+        self.bus
+            .0
+            .borrow_mut()
+            .nodes
+            .get_mut(self.node)
+            .is_some_and(|n| std::mem::take(&mut n.overrun))
+    }
+}
+
+impl Clock for SimPort {
+    fn now(&self) -> Ticks {
+        self.bus.now()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::port::CanId;
+
+    #[test]
+    fn frames_reach_other_nodes_in_order_with_timestamps() {
+        let bus = SimBus::new();
+        let mut a = bus.attach(8);
+        let mut b = bus.attach(8);
+        bus.advance_ms(3);
+        a.send(
+            &CanFrame::new(CanId::std_masked(0x101), &[1]),
+            Priority::High,
+        )
+        .unwrap();
+        bus.advance_ms(1);
+        a.send(
+            &CanFrame::new(CanId::std_masked(0x102), &[0xFE]),
+            Priority::High,
+        )
+        .unwrap();
+        assert_eq!(a.receive(), None, "a sender does not hear itself");
+        let f1 = b.receive().unwrap();
+        let f2 = b.receive().unwrap();
+        assert_eq!((f1.frame.id.id(), f1.time), (0x101, Ticks(30)));
+        assert_eq!((f2.frame.id.id(), f2.time), (0x102, Ticks(40)));
+        assert_eq!(
+            bus.trace(),
+            vec!["  can0  101   [1]  01", "  can0  102   [1]  FE"]
+        );
+    }
+
+    #[test]
+    fn full_queue_reports_overrun() {
+        let bus = SimBus::new();
+        let mut a = bus.attach(1);
+        let mut b = bus.attach(1);
+        a.send(&CanFrame::new(CanId::std_masked(1), &[]), Priority::Low)
+            .unwrap();
+        a.send(&CanFrame::new(CanId::std_masked(2), &[]), Priority::Low)
+            .unwrap();
+        assert!(b.take_rx_overrun());
+        assert!(!b.take_rx_overrun());
+        assert_eq!(b.receive().unwrap().frame.id.id(), 1);
+        assert_eq!(b.receive(), None);
+    }
+
+    #[test]
+    fn candump_format() {
+        let f = CanFrame::new(
+            CanId::std_masked(0x602),
+            &[0x2F, 0x00, 0x62, 0x01, 0xFF, 0, 0, 0],
+        );
+        assert_eq!(candump(&f), "  can0  602   [8]  2F 00 62 01 FF 00 00 00");
+        assert_eq!(
+            candump(&CanFrame::remote(CanId::std_masked(0x702), 1)),
+            "  can0  702   [1]  remote request"
+        );
+    }
+}
