@@ -124,7 +124,9 @@ impl CanFrame {
     pub fn new(id: CanId, data: &[u8]) -> CanFrame {
         let mut buf = [0u8; 8];
         let n = data.len().min(8);
-        buf[..n].copy_from_slice(&data[..n]);
+        for (b, d) in buf.iter_mut().zip(data) {
+            *b = *d;
+        }
         CanFrame {
             id,
             rtr: false,
@@ -146,7 +148,7 @@ impl CanFrame {
     /// The payload (`len` bytes).
     pub fn payload(&self) -> &[u8] {
         let n = usize::from(self.len.min(8));
-        &self.data[..n]
+        self.data.get(..n).unwrap_or(&self.data)
     }
 }
 

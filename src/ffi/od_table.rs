@@ -503,6 +503,8 @@ impl ObdVarEntry {
         if p.is_null() {
             return None;
         }
+        // tObdSize is u8, u16 or u32 depending on the configuration.
+        #[allow(clippy::unnecessary_fallible_conversions)]
         let n = usize::try_from(self.m_Size.load(Ordering::Relaxed)).unwrap_or(0);
         // SAFETY: the application attached (CcmDefineVarTab / attach) a
         // variable of m_Size bytes that outlives the stack; AtomicU8 has the

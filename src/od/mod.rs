@@ -12,6 +12,7 @@
 //! [`ObjectDictionary::write`], so access rights, ranges, module hooks and
 //! application callbacks apply to every path alike.
 
+pub mod decl;
 mod types;
 pub mod value;
 
@@ -651,11 +652,7 @@ fn restore_one(desc: &ObdSubEntry, element: usize) {
         return;
     };
     match desc.storage(element) {
-        Some(Storage::Ram(m)) => {
-            if def.len() == m.len() {
-                value::store(m, def);
-            }
-        }
+        Some(Storage::Ram(m)) if def.len() == m.len() => value::store(m, def),
         Some(Storage::RamString(b)) => {
             let n = def.len().min(b.len().saturating_sub(1));
             value::store(b.get(..n).unwrap_or(&[]), def);

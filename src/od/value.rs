@@ -25,7 +25,7 @@ pub fn store(mem: &[AtomicU8], data: &[u8]) {
 /// Reads a native unsigned integer of 1, 2, 4 or 8 bytes.
 pub fn native_to_u64(bytes: &[u8]) -> Option<u64> {
     Some(match bytes.len() {
-        1 => u64::from(bytes[0]),
+        1 => u64::from(*bytes.first()?),
         2 => u64::from(u16::from_ne_bytes(bytes.try_into().ok()?)),
         4 => u64::from(u32::from_ne_bytes(bytes.try_into().ok()?)),
         8 => u64::from_ne_bytes(bytes.try_into().ok()?),
@@ -79,7 +79,8 @@ pub fn native_to_wire(typ: DataType, native: &[u8], out: &mut [u8]) -> Result<us
         Encoding::Numeric { wire, .. } => {
             let v = native_to_u64(native).ok_or(OdError::LENGTH)?;
             let dst = out.get_mut(..wire).ok_or(OdError::TOO_LONG)?;
-            dst.copy_from_slice(&v.to_le_bytes()[..wire]);
+            let le = v.to_le_bytes();
+            dst.copy_from_slice(le.get(..wire).ok_or(OdError::LENGTH)?);
             Ok(wire)
         }
         Encoding::Time => {
@@ -88,8 +89,9 @@ pub fn native_to_wire(typ: DataType, native: &[u8], out: &mut [u8]) -> Result<us
             let days =
                 native_to_u64(native.get(4..6).ok_or(OdError::LENGTH)?).ok_or(OdError::LENGTH)?;
             let dst = out.get_mut(..6).ok_or(OdError::TOO_LONG)?;
-            dst[..4].copy_from_slice(&((ms as u32) & 0x0FFF_FFFF).to_le_bytes());
-            dst[4..6].copy_from_slice(&(days as u16).to_le_bytes());
+            let (ms_dst, days_dst) = dst.split_at_mut(4);
+            ms_dst.copy_from_slice(&((ms as u32) & 0x0FFF_FFFF).to_le_bytes());
+            days_dst.copy_from_slice(&(days as u16).to_le_bytes());
             Ok(6)
         }
         Encoding::Bytes => {
@@ -131,12 +133,14 @@ pub fn wire_to_native(
                     OdError::TOO_SHORT
                 });
             }
-            let ms = le_to_u64(&wire_bytes[..4]) & 0x0FFF_FFFF;
-            let days = le_to_u64(&wire_bytes[4..6]);
+            let (ms_wire, days_wire) = wire_bytes.split_at(4);
+            let ms = le_to_u64(ms_wire) & 0x0FFF_FFFF;
+            let days = le_to_u64(days_wire);
             let dst = out.get_mut(..size).ok_or(OdError::LENGTH)?;
             dst.fill(0);
-            u64_to_native(ms, 4, &mut dst[..4]).ok_or(OdError::LENGTH)?;
-            u64_to_native(days, 2, &mut dst[4..6]).ok_or(OdError::LENGTH)?;
+            let (ms_dst, rest) = dst.split_at_mut(4);
+            u64_to_native(ms, 4, ms_dst).ok_or(OdError::LENGTH)?;
+            u64_to_native(days, 2, rest).ok_or(OdError::LENGTH)?;
             Ok(())
         }
         Encoding::Bytes => Err(OdError::LENGTH),
