@@ -28,7 +28,7 @@ use crate::error::{CopKernel, CopResult, OdError};
 use crate::event::{Action, ActionQueue, Event, Internal, NmtEvent, NmtState};
 use crate::heartbeat::HeartbeatProducer;
 use crate::od::{ByteOrder, Object, ObjectDictionary, Staged, WriteHooks};
-use crate::port::{CanPort, Priority, RxFrame, Ticks};
+use crate::port::{CanId, CanPort, Priority, RxFrame, Ticks};
 use crate::sdo::SdoServer;
 use crate::srdo::Srdo;
 use crate::wire::emcy::Emergency;
@@ -91,6 +91,7 @@ pub struct Stack {
     queue: ActionQueue,
     phase: Phase,
     guard_toggle: bool,
+    sdo_subscribed: Option<CanId>,
     hb: HeartbeatProducer,
     emcy: EmcyProducer,
     sdo: SdoServer,
@@ -158,6 +159,7 @@ impl Stack {
             queue: ActionQueue::new(),
             phase: Phase::Idle,
             guard_toggle: false,
+            sdo_subscribed: None,
             hb: HeartbeatProducer::new(),
             emcy: EmcyProducer::new(),
             sdo: SdoServer::new(),
@@ -350,6 +352,7 @@ impl Stack {
             }
             if changed {
                 self.sdo.reconfigure(&self.od, self.node_id);
+                self.subscribe(port);
             }
         }
     }
@@ -423,6 +426,7 @@ impl Stack {
                 self.hb.reconfigure(&self.od, now);
                 self.emcy.reconfigure(&self.od, self.node_id);
                 self.sdo.reconfigure(&self.od, self.node_id);
+                self.subscribe(port);
                 self.srdo.reconfigure(&self.od, port);
                 if self.connected && self.state == NmtState::Initialisation {
                     self.queue_state(NmtState::PreOperational);
@@ -430,6 +434,24 @@ impl Stack {
             }
             Internal::EnterState(s) => self.enter_state(s, port, now),
             Internal::SrdoCheckHandled(slot) => self.srdo.check_handled(slot, &mut self.queue),
+        }
+    }
+
+    /// Tells the driver which identifiers to receive (`CdrvDefineCanId`):
+    /// NMT, node guarding requests and the SDO server. The SRDO module
+    /// subscribes its own COB-IDs.
+    fn subscribe(&mut self, port: &mut impl CanPort) {
+        let _ = port.subscribe(CanId::std_masked(nmt::NMT_COB_ID), Priority::High);
+        let _ = port.subscribe(nmt::error_control_id(self.node_id), Priority::Low);
+        let sdo = self.sdo.rx_id();
+        if sdo != self.sdo_subscribed {
+            if let Some(old) = self.sdo_subscribed {
+                let _ = port.unsubscribe(old);
+            }
+            if let Some(new) = sdo {
+                let _ = port.subscribe(new, Priority::Low);
+            }
+            self.sdo_subscribed = sdo;
         }
     }
 

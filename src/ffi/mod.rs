@@ -3,7 +3,13 @@
 
 #![allow(non_snake_case, non_camel_case_types, non_upper_case_globals)]
 
+pub mod ccm;
+pub mod driver;
+pub mod global;
+pub mod master;
 pub mod od_table;
+pub mod stack_callbacks;
+pub mod types;
 
 include!(concat!(env!("OUT_DIR"), "/abi_symbol.rs"));
 

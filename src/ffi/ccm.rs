@@ -1,0 +1,399 @@
+//! The CCM core API: `CcmInitCANopen`, `CcmConnectToNet`, `CcmProcess`,
+//! `CcmShutDownCANopen`, `CcmReadObject`, `CcmWriteObject`, NMT, EMCY,
+//! heartbeat and variable tables.
+//!
+//! Conventions for every function here: the result is a `tCopKernel`
+//! (32-bit, the values of errordef.h); pointers are checked before use
+//! (`kCopInvalidParam` for NULL); before `CcmInitCANopen` every function
+//! returns `kCopIllegalInstance`; called from inside an OBD callback they
+//! return `kCopNoResource`.
+
+use core::ffi::c_void;
+use core::sync::atomic::AtomicU8;
+
+use super::driver::{self, CdrvPort, TgtClock};
+use super::global::{self, Instance};
+use super::od_table::{self, Storage};
+use super::types::*;
+use crate::ccm::{NmtCommand, Stack};
+use crate::error::{CopKernel, CopResult, to_code};
+use crate::od::{ByteOrder, ObjectDictionary};
+use crate::port::Clock;
+use crate::wire::emcy::Emergency;
+
+/// Version word of this library: major, minor, release
+/// (`COP_STACK_VERSION` layout: bits 0-7 major, 8-15 minor, 16-31 release).
+pub const STACK_VERSION: u32 = 5 | (60 << 8) | (1 << 16);
+
+fn code(r: Result<CopResult, CopKernel>) -> tCopKernel {
+    match r {
+        Ok(inner) => to_code(inner),
+        Err(e) => e.code(),
+    }
+}
+
+/// `CopGetStackVersion`: the version word (see `COP_GET_MAJOR_VERSION`).
+#[unsafe(no_mangle)]
+pub extern "C" fn CopGetStackVersion() -> DWORD {
+    STACK_VERSION
+}
+
+/// `CcmInitCANopen`: builds the dictionary from the application's
+/// `ObdInitRam`, initialises the driver (`CdrvInit`) and the stack, and runs
+/// the start-up NMT events (kNmtEvEnterInitialising, kNmtEvResetNode,
+/// kNmtEvPreResetCommunication, kNmtEvResetCommunication,
+/// kNmtEvPostResetCommunication) through the NMT callback. The node stays
+/// in INITIALISATION until `CcmConnectToNet`.
+///
+/// Returns kCopSuccessful; kCopInvalidParam (NULL parameter or no
+/// `m_fpObdInitRam`); kCopWrongSignature (objdef.h built with another
+/// configuration than the library); kCopObdIllegalPart /
+/// kCopObdUnknownObjectType (a dictionary table is unsorted or malformed);
+/// kCopInvalidNodeId (node-ID not 1..127); kCopNoFreeInstance (already
+/// initialised); the driver's code from `CdrvInit`; an SRDO configuration
+/// code from the SRDO module.
+///
+/// # Safety
+/// `pInitParam_p` must be NULL or point to a valid `tCcmInitParam`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmInitCANopen(
+    pInitParam_p: *mut tCcmInitParam,
+    FirstCall_p: tCcmInitCall,
+) -> tCopKernel {
+    let _ = FirstCall_p; // ignored in a single-instance build (cop.h)
+    if pInitParam_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    // SAFETY: checked for NULL; the caller provides a valid structure.
+    let p = unsafe { *pInitParam_p };
+    match init(&p) {
+        Ok(()) => {
+            global::pump(|i, now| i.stack.drain(&mut i.port, now));
+            CopKernel::Successful.code()
+        }
+        Err(e) => e.code(),
+    }
+}
+
+fn init(p: &tCcmInitParam) -> CopResult {
+    let Some(init_ram) = p.m_fpObdInitRam else {
+        return Err(CopKernel::InvalidParam);
+    };
+    if global::with(|_| ()).is_ok() {
+        return Err(CopKernel::NoFreeInstance);
+    }
+    let mut ram = tObdRamParam::zeroed();
+    // SAFETY: ObdInitRam (objdef.h) fills the tObdRamParam it is given.
+    let ret = unsafe { init_ram(&mut ram as *mut tObdRamParam as *mut c_void) };
+    if ret != 0 {
+        return Err(CopKernel::InvalidParam);
+    }
+    if !core::ptr::eq(ram.m_pbAbiSignature, &super::COP_LIB_ABI_SIGNATURE) {
+        return Err(CopKernel::WrongSignature);
+    }
+    // SAFETY: objdef.h emits each part as a static array ending with index
+    // 0xFFFF (or NULL for an absent part).
+    let (generic, man, dev, usr) = unsafe {
+        (
+            od_table::c_table(ram.m_pGenericPart),
+            od_table::c_table(ram.m_pManufacturerPart),
+            od_table::c_table(ram.m_pDevicePart),
+            od_table::c_table(ram.m_pUserPart),
+        )
+    };
+    let mut od = ObjectDictionary::new(generic, man, dev).map_err(|e| e.code)?;
+    od.set_user_part(usr).map_err(|e| e.code)?;
+    let srdo_callbacks = if ram.m_pSrdoCallbacks.is_null() {
+        None
+    } else {
+        // SAFETY: objdef.h points to a static tSrdoAppCallbacks.
+        Some(unsafe { *ram.m_pSrdoCallbacks })
+    };
+    let mut cdrv = tCdrvInitParam {
+        m_BaudIndex: p.m_BaudIndex,
+        m_pBdiTable: p.m_pBdiTable,
+        m_wSizeOfBdiTab: p.m_wSizeOfBdiTab,
+        m_dwAmr: p.m_dwAmr,
+        m_dwAcr: p.m_dwAcr,
+        m_HwParam: p.m_HwParam,
+        m_RxBuffHigh: ram.m_RxBuffHigh,
+        m_TxBuffHigh: ram.m_TxBuffHigh,
+        m_RxBuffLow: ram.m_RxBuffLow,
+        m_TxBuffLow: ram.m_TxBuffLow,
+        m_fpEnableInterrupt: p.m_fpCanInterruptEnable,
+    };
+    let stack = Stack::new(od, p.m_bInitNodeId)?;
+    driver::init(&mut cdrv)?;
+    global::install(Instance {
+        stack,
+        port: CdrvPort,
+        nmt_callback: p.m_fpNmtEventCallback,
+        error_callback: None,
+        srdo_callbacks,
+    })
+}
+
+/// `CcmShutDownCANopen`: stops the stack and deletes the driver instance
+/// (`CdrvDeleteInstance`). kCopIllegalInstance when not initialised.
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmShutDownCANopen() -> tCopKernel {
+    match global::remove() {
+        Ok(_) => to_code(driver::delete_instance()),
+        Err(e) => e.code(),
+    }
+}
+
+/// `CcmConnectToNet`: INITIALISATION -> PRE-OPERATIONAL (boot-up message,
+/// kNmtEvEnterPreOperational). kCopNmtStateError when already connected.
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmConnectToNet() -> tCopKernel {
+    let r = global::with(|i| i.stack.connect());
+    if matches!(r, Ok(Ok(()))) {
+        global::pump(|i, now| i.stack.drain(&mut i.port, now));
+    }
+    code(r)
+}
+
+/// `CcmProcess`: one processing cycle (received frames, SRDO checks,
+/// timers); the application's callbacks run inside this call.
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmProcess() -> tCopKernel {
+    let r = global::with(|i| i.stack.begin_cycle());
+    if r.is_ok() {
+        global::pump(|i, now| i.stack.poll(&mut i.port, now));
+    }
+    code(r.map(|()| Ok(())))
+}
+
+/// `CcmReadObject`: copies the value of an object (CPU byte order) into
+/// `pDstData_p`; `*pSize_p` is the buffer size on entry and the number of
+/// bytes read on return.
+///
+/// Returns kCopSuccessful, kCopInvalidParam (NULL pointer),
+/// kCopObdIndexNotExist, kCopObdSubindexNotExist, kCopObdReadViolation,
+/// kCopObdValueLengthError (buffer too small), kCopObdVarEntryNotExist
+/// (USERDEF object without variable), or the code an OBD callback returned.
+///
+/// # Safety
+/// `pDstData_p` must be valid for `*pSize_p` bytes of writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmReadObject(
+    wIndex_p: WORD,
+    bSubindex_p: BYTE,
+    pDstData_p: *mut c_void,
+    pSize_p: *mut tObdSize,
+) -> tCopKernel {
+    if pDstData_p.is_null() || pSize_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    // SAFETY: checked for NULL; the caller owns the size variable.
+    let cap = usize::from(unsafe { *pSize_p });
+    // SAFETY: the caller guarantees `cap` writable bytes at pDstData_p.
+    let out = unsafe { core::slice::from_raw_parts_mut(pDstData_p as *mut u8, cap) };
+    let r = global::with(|i| {
+        i.stack
+            .read_object(wIndex_p, bSubindex_p, ByteOrder::Native, out)
+    });
+    match r {
+        Ok(Ok(n)) => {
+            // SAFETY: as above; n <= cap fits tObdSize.
+            unsafe { *pSize_p = n as tObdSize };
+            CopKernel::Successful.code()
+        }
+        Ok(Err(e)) => e.kernel.code(),
+        Err(e) => e.code(),
+    }
+}
+
+/// `CcmWriteObject`: writes an object (CPU byte order) through the same
+/// checks as an SDO download: access rights, size, value range, module
+/// rules (SRDO parameters), OBD callbacks. A refused write changes
+/// nothing.
+///
+/// Returns kCopSuccessful, kCopInvalidParam (NULL data with a size),
+/// kCopObdIndexNotExist, kCopObdSubindexNotExist, kCopObdWriteViolation,
+/// kCopObdValueLengthError, kCopObdValueToLow, kCopObdValueToHigh,
+/// kCopObdVarEntryNotExist, kCopSrdo* codes for SRDO parameters, or the code
+/// an OBD callback returned.
+///
+/// # Safety
+/// `pSrcData_p` must be valid for `Size_p` bytes of reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmWriteObject(
+    wIndex_p: WORD,
+    bSubindex_p: BYTE,
+    pSrcData_p: *const c_void,
+    Size_p: tObdSize,
+) -> tCopKernel {
+    let n = usize::from(Size_p);
+    if pSrcData_p.is_null() && n > 0 {
+        return CopKernel::InvalidParam.code();
+    }
+    let data: &[u8] = if n == 0 {
+        &[]
+    } else {
+        // SAFETY: the caller guarantees n readable bytes.
+        unsafe { core::slice::from_raw_parts(pSrcData_p as *const u8, n) }
+    };
+    let now = TgtClock.now();
+    let r = global::with(|i| {
+        i.stack
+            .write_object(wIndex_p, bSubindex_p, ByteOrder::Native, data, now)
+            .map_err(|e| e.kernel)
+    });
+    let c = code(r);
+    // A write may have queued events (e.g. an SRDO configuration change).
+    global::pump(|i, now| i.stack.drain(&mut i.port, now));
+    c
+}
+
+/// `CcmObdGetNodeState`: the NMT state (`kNodeState*`), 0 before
+/// initialisation.
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmObdGetNodeState() -> BYTE {
+    global::with(|i| i.stack.nmt_state() as u8).unwrap_or(0)
+}
+
+/// `CcmLsssGetNodeId`: this node's ID, 0 before initialisation.
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmLsssGetNodeId() -> BYTE {
+    global::with(|i| i.stack.node_id()).unwrap_or(0)
+}
+
+/// `CcmNmtsExecCommand`: a local NMT command (kNmtComm*).
+/// kCopNmtUnknownCommand for an unknown value, kCopNmtStateError before
+/// `CcmConnectToNet`.
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmNmtsExecCommand(NmtCommand_p: tNmtCommand) -> tCopKernel {
+    let Some(cmd) = NmtCommand::from_u16(NmtCommand_p) else {
+        return CopKernel::NmtUnknownCommand.code();
+    };
+    let r = global::with(|i| i.stack.exec_command(cmd));
+    global::pump(|i, now| i.stack.drain(&mut i.port, now));
+    code(r)
+}
+
+/// `CcmRegisterErrorCallback`.
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmRegisterErrorCallback(fpErrorCallback_p: tCcmErrorCallback) {
+    let _ = global::with(|i| i.error_callback = fpErrorCallback_p);
+}
+
+/// `CcmConfigHbp`: sets the producer heartbeat time (writes 0x1017).
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmConfigHbp(wHbProducerTime_p: WORD) -> tCopKernel {
+    let now = TgtClock.now();
+    let bytes = wHbProducerTime_p.to_ne_bytes();
+    code(global::with(|i| {
+        i.stack
+            .write_object(0x1017, 0, ByteOrder::Native, &bytes, now)
+            .map_err(|e| e.kernel)
+    }))
+}
+
+/// `CcmConfigEmcp`: sets the EMCY COB-ID (bit 31 disables the producer).
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmConfigEmcp(dwEmcpProducerCobId_p: DWORD) -> tCopKernel {
+    code(global::with(|i| {
+        i.stack.emcy_mut().set_cob_id(dwEmcpProducerCobId_p);
+        Ok(())
+    }))
+}
+
+/// `CcmSendEmergency`: sends an emergency message and records it in
+/// 0x1001/0x1003. kCopInvalidParam for NULL, kCopNmtStateError when not
+/// connected or STOPPED, kCopNoResource when the inhibit-time queue is full.
+///
+/// # Safety
+/// `pEmcpParam_p` must be NULL or point to a valid `tEmcParam`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmSendEmergency(pEmcpParam_p: *const tEmcParam) -> tCopKernel {
+    if pEmcpParam_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    // SAFETY: checked for NULL.
+    let p = unsafe { *pEmcpParam_p };
+    let e = Emergency {
+        code: p.m_wEmcyErrorCode,
+        register: p.m_bErrorRegister,
+        manufacturer: p.m_abManufactErrorCode,
+    };
+    let now = TgtClock.now();
+    code(global::with(|i| {
+        i.stack.send_emergency(&mut i.port, now, e)
+    }))
+}
+
+/// `CcmDefineVarTab`: attaches application variables to USERDEF / DOMAIN
+/// objects (their `tObdVarEntry`). kCopInvalidParam for NULL,
+/// kCopObdIndexNotExist / kCopObdSubindexNotExist, kCopObdVarEntryNotExist
+/// when the object is not a USERDEF/DOMAIN object, kCopObdValueLengthError
+/// when the size does not fit the object's type. Entries before a failing
+/// one stay defined.
+///
+/// # Safety
+/// `pVarTab_p` must point to `wNumOfVars_p` valid entries whose `m_pData`
+/// variables outlive the stack.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmDefineVarTab(
+    pVarTab_p: *const tVarParam,
+    wNumOfVars_p: WORD,
+) -> tCopKernel {
+    if pVarTab_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    // SAFETY: the caller provides wNumOfVars_p entries.
+    let tab = unsafe { core::slice::from_raw_parts(pVarTab_p, usize::from(wNumOfVars_p)) };
+    code(global::with(|i| {
+        for v in tab {
+            define_var(i.stack.od(), v)?;
+        }
+        Ok(())
+    }))
+}
+
+fn define_var(od: &ObjectDictionary, v: &tVarParam) -> CopResult {
+    let obj = od.find(v.m_wIndex, v.m_bSubindex).map_err(|e| e.kernel)?;
+    let Ok(Storage::Var(entry)) = obj
+        .desc()
+        .storage(0)
+        .ok_or(())
+        .and_then(|_| obj.storage().map_err(|_| ()))
+    else {
+        return Err(CopKernel::ObdVarEntryNotExist);
+    };
+    use core::sync::atomic::Ordering::Relaxed;
+    if v.m_bValidFlag & var_valid::SIZE != 0 {
+        let size = usize::from(v.m_Size);
+        if let Some(w) = obj.data_type().wire_size() {
+            if !crate::od::value::size_fits(obj.data_type(), size) || size < w {
+                return Err(CopKernel::ObdValueLengthError);
+            }
+        }
+        entry.m_Size.store(v.m_Size, Relaxed);
+    }
+    if v.m_bValidFlag & var_valid::DATA != 0 {
+        entry.m_pData.store(v.m_pData, Relaxed);
+    }
+    if v.m_bValidFlag & var_valid::CALLBACK != 0 {
+        let f = v
+            .m_fpCallback
+            .map_or(core::ptr::null_mut(), |f| f as *mut c_void);
+        entry.m_fpCallback.store(f, Relaxed);
+    }
+    if v.m_bValidFlag & var_valid::ARG != 0 {
+        entry.m_pArg.store(v.m_pArg, Relaxed);
+    }
+    Ok(())
+}
+
+/// Turns an application pointer into a shared byte view (SRDO variable
+/// fields, mapped-variable pointers).
+///
+/// # Safety
+/// `p` must be valid for `len` bytes for the rest of the program.
+#[allow(dead_code)]
+pub(crate) unsafe fn static_bytes(p: *mut c_void, len: usize) -> &'static [AtomicU8] {
+    // SAFETY: guaranteed by the caller; AtomicU8 has the layout of u8.
+    unsafe { core::slice::from_raw_parts(p as *const AtomicU8, len) }
+}

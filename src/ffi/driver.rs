@@ -1,0 +1,180 @@
+//! The SYS TEC CAN driver and target contract as the stack's port: the
+//! application's existing `Cdrv*` functions and `TgtGetTickCount`.
+
+use super::types::{cdrv_status, msg_type, tCanId, tCdrvInitParam, tCdrvMsg, tCopKernel, tTime};
+use crate::error::{CopKernel, CopResult};
+use crate::port::{CanFrame, CanId, CanPort, Clock, Priority, RxFrame, Ticks};
+
+unsafe extern "C" {
+    fn CdrvInit(pInitParam_p: *mut tCdrvInitParam) -> tCopKernel;
+    fn CdrvDeleteInstance() -> tCopKernel;
+    fn CdrvWriteMsg(pCanMsg_p: *mut tCdrvMsg) -> tCopKernel;
+    fn CdrvReadMsg(ppCanMsg_p: *mut *mut tCdrvMsg) -> tCopKernel;
+    fn CdrvReleaseMsg(pCanMsg_p: *mut tCdrvMsg) -> tCopKernel;
+    fn CdrvDefineCanId(pCanMsg_p: *mut tCdrvMsg) -> tCopKernel;
+    fn CdrvUndefineCanId(pCanMsg_p: *mut tCdrvMsg) -> tCopKernel;
+    fn CdrvGetStatus(pStatus_p: *mut u16) -> tCopKernel;
+    fn CdrvResetStatus(Status_p: u16) -> tCopKernel;
+    fn TgtGetTickCount() -> tTime;
+}
+
+fn result(code: tCopKernel) -> CopResult {
+    if code == 0 { Ok(()) } else { Err(kernel(code)) }
+}
+
+/// Maps a driver return code to the enum (unknown codes become
+/// `kCopCdrvInitError` so that no value is silently taken for success).
+pub fn kernel(code: tCopKernel) -> CopKernel {
+    use CopKernel::*;
+    match code {
+        0x10 => CdrvNoMsg,
+        0x11 => CdrvMsgHigh,
+        0x12 => CdrvMsgLow,
+        0x13 => CdrvInitError,
+        0x14 => CdrvNoFreeChannel,
+        0x15 => CdrvTxBuffHighOverrun,
+        0x16 => CdrvTxBuffLowOverrun,
+        0x17 => CdrvIllegalBdi,
+        0x18 => CdrvBusy,
+        0x19 => CdrvInvalidDriverType,
+        0x1A => CdrvDriverNotFound,
+        0x1B => CdrvInvalidBaseAddress,
+        0x1C => CdrvInvalidParam,
+        0x1D => CdrvInvalidDevNumber,
+        0x1E => CdrvDevAlreadyInUse,
+        0x1F => CdrvHostOsError,
+        _ => CdrvInitError,
+    }
+}
+
+/// `CdrvInit`.
+pub fn init(param: &mut tCdrvInitParam) -> CopResult {
+    // SAFETY: calling the application's driver with a valid, initialised
+    // parameter block that lives for the duration of the call.
+    result(unsafe { CdrvInit(param) })
+}
+
+/// `CdrvDeleteInstance`.
+pub fn delete_instance() -> CopResult {
+    // SAFETY: plain call into the application's driver.
+    result(unsafe { CdrvDeleteInstance() })
+}
+
+fn to_msg(frame: &CanFrame, kind: u8) -> tCdrvMsg {
+    let mut m = tCdrvMsg {
+        m_CanId: frame.id.id() as tCanId,
+        m_MsgType: kind,
+        m_bSize: frame.len,
+        m_bData: frame.data,
+        ..tCdrvMsg::default()
+    };
+    if frame.rtr {
+        m.m_MsgType |= msg_type::RTR;
+    }
+    if frame.id.is_extended() {
+        m.m_MsgType |= msg_type::EXTEND;
+    }
+    m
+}
+
+/// The stack's port onto the application's driver.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct CdrvPort;
+
+impl CanPort for CdrvPort {
+    fn send(&mut self, frame: &CanFrame, prio: Priority) -> CopResult {
+        let mut m = to_msg(
+            frame,
+            match prio {
+                Priority::High => msg_type::HIGH_PRIO,
+                Priority::Low => 0,
+            },
+        );
+        // SAFETY: `m` is a valid tCdrvMsg on our stack; the driver copies it.
+        result(unsafe { CdrvWriteMsg(&mut m) })
+    }
+
+    fn receive(&mut self) -> Option<RxFrame> {
+        let mut p: *mut tCdrvMsg = core::ptr::null_mut();
+        // SAFETY: the driver stores a pointer to one of its buffer entries
+        // into `p` (or leaves it untouched and returns kCopCdrvNoMsg).
+        let code = unsafe { CdrvReadMsg(&mut p) };
+        if (code != CopKernel::CdrvMsgHigh.code()
+            && code != CopKernel::CdrvMsgLow.code()
+            && code != 0)
+            || p.is_null()
+        {
+            return None;
+        }
+        // SAFETY: on success `p` points to a driver buffer entry that stays
+        // valid until CdrvReleaseMsg; we copy it before releasing.
+        let m = unsafe { *p };
+        // SAFETY: releases the entry obtained above, exactly once.
+        unsafe { CdrvReleaseMsg(p) };
+        let id = if m.m_MsgType & msg_type::EXTEND != 0 {
+            CanId::ext(u32::from(m.m_CanId)).unwrap_or(CanId::std_masked(0x7FF))
+        } else {
+            CanId::std_masked(m.m_CanId as u16)
+        };
+        let len = m.m_bSize.min(8);
+        let mut frame = CanFrame::new(id, m.m_bData.get(..usize::from(len)).unwrap_or(&[]));
+        frame.rtr = m.m_MsgType & msg_type::RTR != 0;
+        if frame.rtr {
+            frame.len = m.m_bSize.min(8);
+        }
+        #[cfg(cdrv_timestamp)]
+        let time = Ticks(m.m_Time);
+        #[cfg(not(cdrv_timestamp))]
+        let time = TgtClock.now();
+        Some(RxFrame { frame, time })
+    }
+
+    fn take_rx_overrun(&mut self) -> bool {
+        let mut status: u16 = 0;
+        // SAFETY: `status` is a valid WORD for the driver to fill.
+        if unsafe { CdrvGetStatus(&mut status) } != 0 {
+            return false;
+        }
+        let lost = status
+            & (cdrv_status::OVERRUN
+                | cdrv_status::RX_BUFF_HIGH_OVERRUN
+                | cdrv_status::RX_BUFF_LOW_OVERRUN);
+        if lost != 0 {
+            // SAFETY: plain call; clears the bits we consumed.
+            unsafe { CdrvResetStatus(lost) };
+        }
+        lost != 0
+    }
+
+    fn subscribe(&mut self, id: CanId, prio: Priority) -> CopResult {
+        let frame = CanFrame::new(id, &[]);
+        let mut m = to_msg(
+            &frame,
+            msg_type::RECV
+                | match prio {
+                    Priority::High => msg_type::HIGH_PRIO,
+                    Priority::Low => 0,
+                },
+        );
+        // SAFETY: valid message descriptor for the duration of the call.
+        result(unsafe { CdrvDefineCanId(&mut m) })
+    }
+
+    fn unsubscribe(&mut self, id: CanId) -> CopResult {
+        let frame = CanFrame::new(id, &[]);
+        let mut m = to_msg(&frame, msg_type::RECV);
+        // SAFETY: valid message descriptor for the duration of the call.
+        result(unsafe { CdrvUndefineCanId(&mut m) })
+    }
+}
+
+/// The application's tick counter.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct TgtClock;
+
+impl Clock for TgtClock {
+    fn now(&self) -> Ticks {
+        // SAFETY: plain call into the application's target code.
+        Ticks(unsafe { TgtGetTickCount() })
+    }
+}

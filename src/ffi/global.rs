@@ -1,0 +1,202 @@
+//! The one stack instance behind the C API (single-instance build: the
+//! `CCM_DECL_INSTANCE_HDL` macros are empty, so every `Ccm*` call addresses
+//! this instance).
+//!
+//! Access is exclusive and checked at run time: while a `Ccm*` function is
+//! inside the stack, a nested call (which can only come from an OBD callback
+//! the stack is executing) is refused with `kCopNoResource` instead of
+//! creating a second mutable reference. Event callbacks (`AppSrdoEvent`,
+//! the NMT callback, ...) run after the stack has been released, so they may
+//! call any `Ccm*` function.
+
+use core::cell::{Cell, UnsafeCell};
+
+use super::driver::{CdrvPort, TgtClock};
+use super::types::{tCcmErrorCallback, tCcmNmtEventCallback, tSrdoAppCallbacks};
+use crate::ccm::Stack;
+use crate::error::CopKernel;
+use crate::event::Event;
+use crate::port::Clock;
+
+/// Everything the C API keeps between calls.
+pub struct Instance {
+    /// The device.
+    pub stack: Stack,
+    /// The driver.
+    pub port: CdrvPort,
+    /// `m_fpNmtEventCallback`.
+    pub nmt_callback: tCcmNmtEventCallback,
+    /// `CcmRegisterErrorCallback`.
+    pub error_callback: tCcmErrorCallback,
+    /// The application's SRDO callbacks (from objdef.h).
+    pub srdo_callbacks: Option<tSrdoAppCallbacks>,
+}
+
+/// Instances: one on a target. Host builds (`std`) keep several so that a
+/// simulation can run more than one node in one process; the harness
+/// selects the node the next `Ccm*` calls address with
+/// `CopSimSelectInstance`.
+#[cfg(feature = "std")]
+pub const MAX_INSTANCES: usize = 8;
+/// Instances: one on a target.
+#[cfg(not(feature = "std"))]
+pub const MAX_INSTANCES: usize = 1;
+
+struct Global {
+    instances: UnsafeCell<[Option<Instance>; MAX_INSTANCES]>,
+    current: Cell<usize>,
+    busy: Cell<bool>,
+}
+
+// SAFETY: the C API is documented as single-threaded (one thread calls the
+// Ccm* functions; callbacks run inside those calls). `busy` turns accidental
+// re-entry into an error code instead of aliasing.
+unsafe impl Sync for Global {}
+
+static GLOBAL: Global = Global {
+    instances: UnsafeCell::new([const { None }; MAX_INSTANCES]),
+    current: Cell::new(0),
+    busy: Cell::new(false),
+};
+
+/// Borrows the current instance slot; `busy` must be held.
+fn slot() -> Option<&'static mut Option<Instance>> {
+    // SAFETY: only called while `busy` is true, so no other reference into
+    // the cell exists until the caller clears `busy`.
+    let all = unsafe { &mut *GLOBAL.instances.get() };
+    all.get_mut(GLOBAL.current.get())
+}
+
+/// Selects the instance the C API addresses (host simulation only).
+/// Returns `false` for an index out of range or while the stack is busy.
+pub fn select(index: usize) -> bool {
+    if index >= MAX_INSTANCES || GLOBAL.busy.get() {
+        return false;
+    }
+    GLOBAL.current.set(index);
+    true
+}
+
+/// Runs `f` with exclusive access to the instance.
+/// `Err(kCopIllegalInstance)` before `CcmInitCANopen`, `Err(kCopNoResource)`
+/// for a nested call.
+pub fn with<R>(f: impl FnOnce(&mut Instance) -> R) -> Result<R, CopKernel> {
+    if GLOBAL.busy.replace(true) {
+        return Err(CopKernel::NoResource);
+    }
+    let r = match slot().and_then(|s| s.as_mut()) {
+        Some(i) => Ok(f(i)),
+        None => Err(CopKernel::IllegalInstance),
+    };
+    GLOBAL.busy.set(false);
+    r
+}
+
+/// Installs a new instance; `Err(kCopNoFreeInstance)` if one exists,
+/// `Err(kCopNoResource)` for a nested call.
+pub fn install(i: Instance) -> Result<(), CopKernel> {
+    if GLOBAL.busy.replace(true) {
+        return Err(CopKernel::NoResource);
+    }
+    let r = match slot() {
+        Some(s) if s.is_none() => {
+            *s = Some(i);
+            Ok(())
+        }
+        _ => Err(CopKernel::NoFreeInstance),
+    };
+    GLOBAL.busy.set(false);
+    r
+}
+
+/// Removes the instance.
+pub fn remove() -> Result<Instance, CopKernel> {
+    if GLOBAL.busy.replace(true) {
+        return Err(CopKernel::NoResource);
+    }
+    let r = slot()
+        .and_then(Option::take)
+        .ok_or(CopKernel::IllegalInstance);
+    GLOBAL.busy.set(false);
+    r
+}
+
+/// Calls the application for one event. Runs with the instance released.
+fn dispatch(ev: Event, nmt: tCcmNmtEventCallback, srdo: Option<tSrdoAppCallbacks>) {
+    match ev {
+        Event::Nmt(e) => {
+            if let Some(cb) = nmt {
+                // SAFETY: the application's NMT callback from tCcmInitParam.
+                let ret = unsafe { cb(e as u32) };
+                if ret != 0 {
+                    report_error(CopKernel::NmtStateError);
+                }
+            }
+        }
+        Event::SrdoEvent(idx) => {
+            if let Some(cb) = srdo.and_then(|c| c.m_fpSrdoEvent) {
+                // SAFETY: AppSrdoEvent of the application (objdef.h).
+                unsafe { cb(idx) };
+            }
+        }
+        Event::SrdoError(idx, code) => {
+            if let Some(cb) = srdo.and_then(|c| c.m_fpSrdoError) {
+                // SAFETY: AppSrdoError of the application (objdef.h).
+                unsafe { cb(idx, code.code()) };
+            }
+        }
+        Event::Gfc => {
+            if let Some(cb) = srdo.and_then(|c| c.m_fpGfcEvent) {
+                // SAFETY: AppGfcEvent of the application (objdef.h).
+                unsafe { cb() };
+            }
+        }
+        Event::ProgMon(e) => {
+            if let Some(cb) = srdo.and_then(|c| c.m_fpProgMonEvent) {
+                // SAFETY: AppProgMonEvent of the application (objdef.h).
+                unsafe { cb(e as u32) };
+            }
+        }
+        Event::Hbc(..) | Event::Nmtm(..) | Event::SdocFinished { .. } | Event::Emcc(..) => {
+            super::master::dispatch(ev);
+        }
+    }
+}
+
+/// Reports an error to the callback registered with
+/// `CcmRegisterErrorCallback` (if any).
+pub fn report_error(code: CopKernel) {
+    let cb = with(|i| i.error_callback).ok().flatten();
+    if let Some(cb) = cb {
+        // SAFETY: the application's error callback; no argument object.
+        unsafe { cb(core::ptr::null_mut(), code.code()) };
+    }
+}
+
+/// Hands out events one at a time: `next` runs inside the stack and yields
+/// the next event; the callback runs outside.
+pub fn pump(mut next: impl FnMut(&mut Instance, crate::port::Ticks) -> Option<Event>) {
+    loop {
+        let now = TgtClock.now();
+        let step = with(|i| next(i, now).map(|e| (e, i.nmt_callback, i.srdo_callbacks)));
+        match step {
+            Ok(Some((e, nmt, srdo))) => dispatch(e, nmt, srdo),
+            _ => break,
+        }
+    }
+}
+
+/// `CopSimSelectInstance`: host simulation only (`std` builds) — selects
+/// which of up to [`MAX_INSTANCES`] nodes the following `Ccm*` calls
+/// address, so one process can run several nodes on a simulated bus.
+/// Returns kCopSuccessful, or kCopIllegalInstance for an index out of range
+/// (or when called from inside a callback).
+#[cfg(feature = "std")]
+#[unsafe(no_mangle)]
+pub extern "C" fn CopSimSelectInstance(bInstance_p: u8) -> u32 {
+    if select(usize::from(bInstance_p)) {
+        CopKernel::Successful.code()
+    } else {
+        CopKernel::IllegalInstance.code()
+    }
+}

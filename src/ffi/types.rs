@@ -1,0 +1,334 @@
+//! C types shared with the application, in the exact layout of the SYS TEC
+//! headers (see include/cop_types.h, which declares the same structures and
+//! whose C tests assert the same sizes and offsets).
+//!
+//! ABI decisions (README "ABI"): `DWORD` is 32 bits on every target,
+//! `tFastByte` is a DWORD, `tTime` is a DWORD (ticks of 100 µs), enumerated
+//! types inside shared structures have explicit widths, `tObdSize` follows
+//! `OBD_SUPPORTED_OBJ_SIZE`.
+
+use core::ffi::c_void;
+
+/// `BYTE`.
+pub type BYTE = u8;
+/// `WORD`.
+pub type WORD = u16;
+/// `DWORD` (32 bits everywhere).
+pub type DWORD = u32;
+/// `BOOL`.
+pub type BOOL = u8;
+/// `tCopKernel` (returned as a 32-bit integer).
+pub type tCopKernel = u32;
+/// `tFastByte` (a DWORD).
+pub type tFastByte = u32;
+/// `tTime` (a DWORD of 100 µs ticks).
+pub type tTime = u32;
+/// `tNmtEvent`.
+pub type tNmtEvent = tFastByte;
+/// `tNmtCommand`.
+pub type tNmtCommand = WORD;
+/// `tProgMonEvent`.
+pub type tProgMonEvent = tFastByte;
+/// `tCcmInitCall`.
+pub type tCcmInitCall = tFastByte;
+/// `tObdSize`.
+pub type tObdSize = crate::ffi::od_table::ObdSize;
+/// `tCanId`: WORD for CAN 2.0A, DWORD for CAN 2.0B (`CDRV_CAN_SPEC`).
+#[cfg(not(cdrv_can20b))]
+pub type tCanId = WORD;
+/// `tCanId`: WORD for CAN 2.0A, DWORD for CAN 2.0B (`CDRV_CAN_SPEC`).
+#[cfg(cdrv_can20b)]
+pub type tCanId = DWORD;
+
+/// Message type bits (`tMsgTypBit`).
+pub mod msg_type {
+    /// kMtbRecv.
+    pub const RECV: u8 = 0x01;
+    /// kMtbRtr.
+    pub const RTR: u8 = 0x02;
+    /// kMtbHighPrio.
+    pub const HIGH_PRIO: u8 = 0x40;
+    /// kMtbExtend (29-bit identifier).
+    pub const EXTEND: u8 = 0x80;
+}
+
+/// Driver status bits (`tCdrvStatus`) the stack evaluates.
+pub mod cdrv_status {
+    /// kCdrvOverrun.
+    pub const OVERRUN: u16 = 0x0020;
+    /// kCdrvRxBuffHighOverrun.
+    pub const RX_BUFF_HIGH_OVERRUN: u16 = 0x0400;
+    /// kCdrvRxBuffLowOverrun.
+    pub const RX_BUFF_LOW_OVERRUN: u16 = 0x1000;
+}
+
+/// `tCdrvMsg`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct tCdrvMsg {
+    /// Identifier.
+    pub m_CanId: tCanId,
+    /// `tMsgTyp`.
+    pub m_MsgType: BYTE,
+    /// DLC.
+    pub m_bSize: BYTE,
+    /// Channel.
+    pub m_bChannel_p: BYTE,
+    /// Data.
+    pub m_bData: [BYTE; 8],
+    /// Receive time (ticks), with `CDRV_TIMESTAMP` only.
+    #[cfg(cdrv_timestamp)]
+    pub m_Time: tTime,
+}
+
+/// `tCdrvHwParam`: a union of controller-specific structures; the C
+/// header makes it exactly two pointers wide.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct tCdrvHwParam {
+    /// The union's storage (passed through to the driver untouched).
+    pub m_apvRaw: [*mut c_void; 2],
+}
+
+/// `tCdrvEnableInt`.
+pub type tCdrvEnableInt = Option<unsafe extern "C" fn(bEnable_p: BYTE)>;
+
+/// `tCdrvBuffInit`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct tCdrvBuffInit {
+    /// Buffer base.
+    pub m_pBufferBase: *mut tCdrvMsg,
+    /// Number of entries (`tCdrvBuffIndex`, a WORD on 16/32-bit targets).
+    pub m_MaxEntries: WORD,
+}
+
+/// `tCdrvInitParam` (high-priority buffers always present).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct tCdrvInitParam {
+    /// Bit rate index (`tCdrvBaudIndex`, one byte).
+    pub m_BaudIndex: BYTE,
+    /// Bit rate table.
+    pub m_pBdiTable: *const c_void,
+    /// Size of the table.
+    pub m_wSizeOfBdiTab: WORD,
+    /// Acceptance mask.
+    pub m_dwAmr: DWORD,
+    /// Acceptance code.
+    pub m_dwAcr: DWORD,
+    /// Controller parameters.
+    pub m_HwParam: tCdrvHwParam,
+    /// High-priority receive buffer.
+    pub m_RxBuffHigh: tCdrvBuffInit,
+    /// High-priority transmit buffer.
+    pub m_TxBuffHigh: tCdrvBuffInit,
+    /// Receive buffer.
+    pub m_RxBuffLow: tCdrvBuffInit,
+    /// Transmit buffer.
+    pub m_TxBuffLow: tCdrvBuffInit,
+    /// Interrupt enable function.
+    pub m_fpEnableInterrupt: tCdrvEnableInt,
+}
+
+/// `tCcmNmtEventCallback`.
+pub type tCcmNmtEventCallback = Option<unsafe extern "C" fn(NmtEvent_p: tNmtEvent) -> tCopKernel>;
+/// `tObdInitRam`.
+pub type tObdInitRam = Option<unsafe extern "C" fn(pInitParam_p: *mut c_void) -> tCopKernel>;
+/// `tCcmErrorCallback`.
+pub type tCcmErrorCallback =
+    Option<unsafe extern "C" fn(pArg_p: *mut c_void, ErrorCode_p: tCopKernel) -> tCopKernel>;
+
+/// `tCcmInitParam` (single instance, `COP_USE_CDRV_FUNCTION_POINTER` off).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct tCcmInitParam {
+    /// Node-ID.
+    pub m_bInitNodeId: BYTE,
+    /// Bit rate index (one byte).
+    pub m_BaudIndex: BYTE,
+    /// Bit rate table.
+    pub m_pBdiTable: *const c_void,
+    /// Size of the table.
+    pub m_wSizeOfBdiTab: WORD,
+    /// Acceptance mask.
+    pub m_dwAmr: DWORD,
+    /// Acceptance code.
+    pub m_dwAcr: DWORD,
+    /// Controller parameters.
+    pub m_HwParam: tCdrvHwParam,
+    /// Interrupt enable function.
+    pub m_fpCanInterruptEnable: tCdrvEnableInt,
+    /// NMT callback.
+    pub m_fpNmtEventCallback: tCcmNmtEventCallback,
+    /// The dictionary's init function (`ObdInitRam` from objdef.h).
+    pub m_fpObdInitRam: tObdInitRam,
+}
+
+/// The application's SRDO callbacks, collected by objdef.h when the
+/// dictionary declares SRDO objects (so applications without SRDOs need
+/// not define them).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct tSrdoAppCallbacks {
+    /// `AppSrdoEvent`.
+    pub m_fpSrdoEvent: Option<unsafe extern "C" fn(wSrdoCommuIndex_p: WORD) -> tCopKernel>,
+    /// `AppSrdoError`.
+    pub m_fpSrdoError: Option<
+        unsafe extern "C" fn(wSrdoCommuIndex_p: WORD, ErrorCode_p: tCopKernel) -> tCopKernel,
+    >,
+    /// `AppGfcEvent` (NULL when `SRDO_USE_GFC` is FALSE).
+    pub m_fpGfcEvent: Option<unsafe extern "C" fn() -> tCopKernel>,
+    /// `AppProgMonEvent` (NULL when `SRDO_USE_PROGMONITOR` is FALSE).
+    pub m_fpProgMonEvent: Option<unsafe extern "C" fn(Event_p: tProgMonEvent) -> tCopKernel>,
+}
+
+/// What `ObdInitRam` (generated by objdef.h) hands to the stack. Private
+/// between this library and its own objdef.h.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct tObdRamParam {
+    /// Generic part (0x1000–0x1FFF), ends with index 0xFFFF.
+    pub m_pGenericPart: *const crate::ffi::od_table::ObdEntry,
+    /// Manufacturer part (0x2000–0x5FFF).
+    pub m_pManufacturerPart: *const crate::ffi::od_table::ObdEntry,
+    /// Device part (0x6000–0x9FFF).
+    pub m_pDevicePart: *const crate::ffi::od_table::ObdEntry,
+    /// User part (may be NULL).
+    pub m_pUserPart: *const crate::ffi::od_table::ObdEntry,
+    /// Address of the configuration signature the application was built
+    /// against (see include/cop_config.h).
+    pub m_pbAbiSignature: *const BYTE,
+    /// SRDO callbacks (NULL without SRDO objects).
+    pub m_pSrdoCallbacks: *const tSrdoAppCallbacks,
+    /// Driver buffers (obdcfg.h `CDRV_MAX_*_BUFF_ENTRIES_*`).
+    pub m_RxBuffHigh: tCdrvBuffInit,
+    /// See `m_RxBuffHigh`.
+    pub m_TxBuffHigh: tCdrvBuffInit,
+    /// See `m_RxBuffHigh`.
+    pub m_RxBuffLow: tCdrvBuffInit,
+    /// See `m_RxBuffHigh`.
+    pub m_TxBuffLow: tCdrvBuffInit,
+    /// `SRDO_MAX_SRDO_IN_OBD` of the application's obdcfg.h.
+    pub m_wSrdoCount: WORD,
+}
+
+impl tObdRamParam {
+    /// An all-NULL parameter block.
+    pub const fn zeroed() -> Self {
+        let b = tCdrvBuffInit {
+            m_pBufferBase: core::ptr::null_mut(),
+            m_MaxEntries: 0,
+        };
+        tObdRamParam {
+            m_pGenericPart: core::ptr::null(),
+            m_pManufacturerPart: core::ptr::null(),
+            m_pDevicePart: core::ptr::null(),
+            m_pUserPart: core::ptr::null(),
+            m_pbAbiSignature: core::ptr::null(),
+            m_pSrdoCallbacks: core::ptr::null(),
+            m_RxBuffHigh: b,
+            m_TxBuffHigh: b,
+            m_RxBuffLow: b,
+            m_TxBuffLow: b,
+            m_wSrdoCount: 0,
+        }
+    }
+}
+
+/// `tSrdoCommuParam`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct tSrdoCommuParam {
+    /// Direction (0 invalid, 1 Tx, 2 Rx).
+    pub m_bDirection: BYTE,
+    /// Refresh time / SCT in ms.
+    pub m_wSct: WORD,
+}
+
+/// `tSrdoMappParam` (dynamic mapping only).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct tSrdoMappParam {
+    /// Number of mapped objects.
+    pub m_bNoOfMappedObjects: BYTE,
+    /// Pointers to the mapped variables.
+    pub m_apMappedVariable: [*mut c_void; crate::config::SRDO_MAX_MAPPENTRIES],
+}
+
+/// `tVarCallback`.
+pub type tVarCallback = Option<unsafe extern "C" fn(pParam_p: *mut c_void) -> tCopKernel>;
+
+/// `tVarParam` (`CcmDefineVarTab`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct tVarParam {
+    /// Which fields are valid (kVarValid*).
+    pub m_bValidFlag: BYTE,
+    /// Index.
+    pub m_wIndex: WORD,
+    /// Subindex.
+    pub m_bSubindex: BYTE,
+    /// Size of the variable.
+    pub m_Size: tObdSize,
+    /// The variable.
+    pub m_pData: *mut c_void,
+    /// Callback after a write.
+    pub m_fpCallback: tVarCallback,
+    /// Callback argument.
+    pub m_pArg: *mut c_void,
+}
+
+/// `kVarValid*` flags.
+pub mod var_valid {
+    /// kVarValidSize.
+    pub const SIZE: u8 = 0x01;
+    /// kVarValidData.
+    pub const DATA: u8 = 0x02;
+    /// kVarValidCallback.
+    pub const CALLBACK: u8 = 0x04;
+    /// kVarValidArg.
+    pub const ARG: u8 = 0x08;
+}
+
+/// `tEmcParam`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct tEmcParam {
+    /// Emergency error code.
+    pub m_wEmcyErrorCode: WORD,
+    /// Error register.
+    pub m_bErrorRegister: BYTE,
+    /// Manufacturer-specific field.
+    pub m_abManufactErrorCode: [BYTE; 5],
+    /// Additional information.
+    pub m_wAdditionalInfo: WORD,
+}
+
+// Layout checks. Sizes for a 32-bit target (the product: TMS570) and for a
+// 64-bit host (tests) differ only where pointers appear.
+static_assertions::const_assert_eq!(core::mem::size_of::<tSrdoCommuParam>(), 4);
+static_assertions::const_assert_eq!(core::mem::size_of::<tEmcParam>(), 10);
+static_assertions::const_assert_eq!(
+    core::mem::size_of::<tCdrvHwParam>(),
+    2 * core::mem::size_of::<*mut c_void>()
+);
+#[cfg(all(not(cdrv_can20b), not(cdrv_timestamp)))]
+static_assertions::const_assert_eq!(core::mem::size_of::<tCdrvMsg>(), 14);
+#[cfg(all(not(cdrv_can20b), cdrv_timestamp))]
+static_assertions::const_assert_eq!(core::mem::size_of::<tCdrvMsg>(), 20);
+#[cfg(all(cdrv_can20b, not(cdrv_timestamp)))]
+static_assertions::const_assert_eq!(core::mem::size_of::<tCdrvMsg>(), 16);
+static_assertions::const_assert_eq!(
+    core::mem::offset_of!(tCdrvMsg, m_bData),
+    5 + if cfg!(cdrv_can20b) { 2 } else { 0 }
+);
+#[cfg(target_pointer_width = "32")]
+static_assertions::const_assert_eq!(core::mem::size_of::<tCcmInitParam>(), 40);
+#[cfg(target_pointer_width = "64")]
+static_assertions::const_assert_eq!(core::mem::size_of::<tCcmInitParam>(), 72);
+#[cfg(target_pointer_width = "32")]
+static_assertions::const_assert_eq!(
+    core::mem::size_of::<tSrdoMappParam>(),
+    4 + 4 * crate::config::SRDO_MAX_MAPPENTRIES
+);
