@@ -3,3 +3,4 @@
 
 pub mod emcy;
 pub mod nmt;
+pub mod sdo;
