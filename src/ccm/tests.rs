@@ -1,1 +1,308 @@
+//! Stack-level tests: start-up sequence, NMT commands, heartbeat, node
+//! guarding, object access through the stack.
 
+use core::sync::atomic::AtomicU8;
+
+use super::*;
+use crate::od::{Access, DataType, ObdEntry, ObdSubEntry, decl};
+use crate::port::{CanFrame, CanId};
+use crate::sim::SimBus;
+
+static DEVICE_TYPE: [u8; 4] = 0x0001_0191u32.to_ne_bytes();
+static S1000: [ObdSubEntry; 1] = [ObdSubEntry::rom(
+    0,
+    DataType::UInt32,
+    Access::R,
+    &DEVICE_TYPE,
+)];
+
+static ERR_REG: [AtomicU8; 1] = decl::zeroed();
+static S1001: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+    0,
+    DataType::UInt8,
+    Access::R,
+    &ERR_REG,
+    Some(&[0]),
+)];
+
+static HB_TIME: [AtomicU8; 2] = decl::zeroed();
+static HB_DEF: [u8; 2] = 100u16.to_ne_bytes();
+static S1017: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+    0,
+    DataType::UInt16,
+    Access::SRW,
+    &HB_TIME,
+    Some(&HB_DEF),
+)];
+
+static APP_VAR: [AtomicU8; 1] = decl::zeroed();
+static S2000: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+    0,
+    DataType::UInt8,
+    Access::RW,
+    &APP_VAR,
+    Some(&[7]),
+)];
+
+static GENERIC: [ObdEntry; 3] = [
+    ObdEntry::new(0x1000, &S1000, None),
+    ObdEntry::new(0x1001, &S1001, None),
+    ObdEntry::new(0x1017, &S1017, None),
+];
+static MANUFACTURER: [ObdEntry; 1] = [ObdEntry::new(0x2000, &S2000, None)];
+
+/// The dictionary's variables are statics shared by all tests of this
+/// file; each test holds this lock so they do not run into each other.
+static SERIAL: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+fn serial() -> std::sync::MutexGuard<'static, ()> {
+    SERIAL.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+fn od() -> ObjectDictionary {
+    ObjectDictionary::new(&GENERIC, &MANUFACTURER, &[]).unwrap()
+}
+
+fn events(stack: &mut Stack, port: &mut crate::sim::SimPort, now: Ticks) -> Vec<Event> {
+    let mut v = Vec::new();
+    while let Some(e) = stack.drain(port, now) {
+        v.push(e);
+    }
+    v
+}
+
+fn cycle(stack: &mut Stack, port: &mut crate::sim::SimPort) -> Vec<Event> {
+    let now = port.bus().now();
+    let mut v = Vec::new();
+    stack.process(port, now, |_, e| v.push(e));
+    v
+}
+
+#[test]
+fn node_id_must_be_1_to_127() {
+    let _guard = serial();
+    assert_eq!(Stack::new(od(), 0).err(), Some(CopKernel::InvalidNodeId));
+    assert_eq!(Stack::new(od(), 128).err(), Some(CopKernel::InvalidNodeId));
+    assert!(Stack::new(od(), 127).is_ok());
+}
+
+#[test]
+fn startup_sequence_and_bootup() {
+    let _guard = serial();
+    let bus = SimBus::new();
+    let mut port = bus.attach(16);
+    let mut stack = Stack::new(od(), 2).unwrap();
+    // CcmInitCANopen: the NMT callback sees these, in this order.
+    assert_eq!(
+        events(&mut stack, &mut port, Ticks(0)),
+        vec![
+            Event::Nmt(NmtEvent::EnterInitialising),
+            Event::Nmt(NmtEvent::ResetNode),
+            Event::Nmt(NmtEvent::PreResetCommunication),
+            Event::Nmt(NmtEvent::ResetCommunication),
+            Event::Nmt(NmtEvent::PostResetCommunication),
+        ]
+    );
+    assert_eq!(stack.nmt_state(), NmtState::Initialisation);
+    assert!(
+        bus.trace().is_empty(),
+        "nothing is sent before CcmConnectToNet"
+    );
+    // Reset node restored the defaults.
+    assert_eq!(decl::get(&APP_VAR), [7]);
+    stack.connect().unwrap();
+    assert_eq!(stack.connect(), Err(CopKernel::NmtStateError));
+    assert_eq!(
+        events(&mut stack, &mut port, Ticks(0)),
+        vec![Event::Nmt(NmtEvent::EnterPreOperational)]
+    );
+    assert_eq!(stack.nmt_state(), NmtState::PreOperational);
+    // CiA 301 boot-up: 0x700 + node-ID, one byte 0x00.
+    assert_eq!(bus.trace(), vec!["  can0  702   [1]  00"]);
+}
+
+fn started(node: u8) -> (SimBus, crate::sim::SimPort, Stack) {
+    let bus = SimBus::new();
+    let mut port = bus.attach(64);
+    let mut stack = Stack::new(od(), node).unwrap();
+    events(&mut stack, &mut port, Ticks(0));
+    stack.connect().unwrap();
+    events(&mut stack, &mut port, Ticks(0));
+    bus.clear_trace();
+    (bus, port, stack)
+}
+
+#[test]
+fn nmt_commands_for_this_node_and_broadcast() {
+    let _guard = serial();
+    let (bus, mut port, mut stack) = started(2);
+    bus.inject(nmt::encode_command(NmtCs::Start, 0));
+    assert_eq!(
+        cycle(&mut stack, &mut port),
+        vec![Event::Nmt(NmtEvent::EnterOperational)]
+    );
+    assert_eq!(stack.nmt_state(), NmtState::Operational);
+    // Addressed to another node: ignored.
+    bus.inject(nmt::encode_command(NmtCs::Stop, 3));
+    assert!(cycle(&mut stack, &mut port).is_empty());
+    bus.inject(nmt::encode_command(NmtCs::Stop, 2));
+    assert_eq!(
+        cycle(&mut stack, &mut port),
+        vec![Event::Nmt(NmtEvent::EnterStopped)]
+    );
+    // Start again while stopped, then the same command twice: one event.
+    bus.inject(nmt::encode_command(NmtCs::EnterPreOperational, 2));
+    bus.inject(nmt::encode_command(NmtCs::EnterPreOperational, 2));
+    assert_eq!(
+        cycle(&mut stack, &mut port),
+        vec![Event::Nmt(NmtEvent::EnterPreOperational)]
+    );
+    // A frame with the wrong DLC is not an NMT command.
+    bus.inject(CanFrame::new(CanId::std_masked(0), &[0x01, 0x00, 0x00]));
+    assert!(cycle(&mut stack, &mut port).is_empty());
+    assert_eq!(stack.nmt_state(), NmtState::PreOperational);
+}
+
+#[test]
+fn reset_communication_restores_comm_objects_and_boots_again() {
+    let _guard = serial();
+    let (bus, mut port, mut stack) = started(5);
+    stack
+        .write_object(0x1017, 0, ByteOrder::Wire, &[0xF4, 0x01], Ticks(0))
+        .unwrap();
+    stack
+        .write_object(0x2000, 0, ByteOrder::Wire, &[0x55], Ticks(0))
+        .unwrap();
+    bus.inject(nmt::encode_command(NmtCs::ResetCommunication, 5));
+    assert_eq!(
+        cycle(&mut stack, &mut port),
+        vec![
+            Event::Nmt(NmtEvent::PreResetCommunication),
+            Event::Nmt(NmtEvent::ResetCommunication),
+            Event::Nmt(NmtEvent::PostResetCommunication),
+            Event::Nmt(NmtEvent::EnterPreOperational),
+        ]
+    );
+    assert_eq!(
+        decl::get(&HB_TIME),
+        100u16.to_ne_bytes(),
+        "0x1017 back to default"
+    );
+    assert_eq!(decl::get(&APP_VAR), [0x55], "application object kept");
+    assert_eq!(
+        bus.trace(),
+        vec!["  can0  000   [2]  82 05", "  can0  705   [1]  00"]
+    );
+    bus.inject(nmt::encode_command(NmtCs::ResetNode, 0));
+    let ev = cycle(&mut stack, &mut port);
+    assert_eq!(ev.first(), Some(&Event::Nmt(NmtEvent::ResetNode)));
+    assert_eq!(
+        decl::get(&APP_VAR),
+        [7],
+        "application object back to default"
+    );
+}
+
+#[test]
+fn heartbeat_follows_0x1017() {
+    let _guard = serial();
+    let (bus, mut port, mut stack) = started(4);
+    // Default 100 ms from the dictionary; the first heartbeat one period
+    // after the boot-up.
+    bus.advance_ms(99);
+    cycle(&mut stack, &mut port);
+    assert!(bus.trace().is_empty());
+    bus.advance_ms(1);
+    cycle(&mut stack, &mut port);
+    assert_eq!(bus.trace(), vec!["  can0  704   [1]  7F"]);
+    // 0 switches it off.
+    stack
+        .write_object(0x1017, 0, ByteOrder::Wire, &[0, 0], bus.now())
+        .unwrap();
+    bus.advance_ms(1000);
+    cycle(&mut stack, &mut port);
+    assert_eq!(bus.trace().len(), 1);
+}
+
+#[test]
+fn node_guarding_answers_with_toggle() {
+    let _guard = serial();
+    let (bus, mut port, mut stack) = started(3);
+    stack
+        .write_object(0x1017, 0, ByteOrder::Wire, &[0, 0], bus.now())
+        .unwrap();
+    bus.inject(CanFrame::remote(CanId::std_masked(0x703), 1));
+    cycle(&mut stack, &mut port);
+    bus.inject(CanFrame::remote(CanId::std_masked(0x703), 1));
+    cycle(&mut stack, &mut port);
+    let t = bus.trace();
+    // CiA 301 7.2.8.3.2.1: state 0x7F, toggle bit 7 alternating from 0.
+    assert_eq!(t[1], "  can0  703   [1]  7F");
+    assert_eq!(t[3], "  can0  703   [1]  FF");
+}
+
+#[test]
+fn stopped_node_ignores_everything_but_nmt() {
+    let _guard = serial();
+    let (bus, mut port, mut stack) = started(6);
+    bus.inject(nmt::encode_command(NmtCs::Stop, 6));
+    cycle(&mut stack, &mut port);
+    bus.clear_trace();
+    // An SDO upload request gets no answer in STOPPED.
+    bus.inject(CanFrame::new(
+        CanId::std_masked(0x606),
+        &[0x40, 0x00, 0x10, 0, 0, 0, 0, 0],
+    ));
+    cycle(&mut stack, &mut port);
+    assert_eq!(
+        bus.trace().len(),
+        1,
+        "only the request itself is on the bus"
+    );
+}
+
+#[test]
+fn write_refusals_change_nothing() {
+    let _guard = serial();
+    let (_bus, _port, mut stack) = started(7);
+    assert_eq!(
+        stack.write_object(0x1000, 0, ByteOrder::Wire, &[0, 0, 0, 0], Ticks(0)),
+        Err(OdError::WRITE)
+    );
+    assert_eq!(
+        stack.write_object(0x1017, 0, ByteOrder::Wire, &[1], Ticks(0)),
+        Err(OdError::TOO_SHORT)
+    );
+    assert_eq!(
+        stack.write_object(0x1017, 1, ByteOrder::Wire, &[1, 0], Ticks(0)),
+        Err(OdError::SUBINDEX)
+    );
+    assert_eq!(
+        stack.write_object(0x1999, 0, ByteOrder::Wire, &[1], Ticks(0)),
+        Err(OdError::INDEX)
+    );
+    let mut out = [0u8; 4];
+    assert_eq!(
+        stack.read_object(0x1017, 0, ByteOrder::Wire, &mut out),
+        Ok(2)
+    );
+    assert_eq!(&out[..2], &[100, 0]);
+}
+
+#[test]
+fn emergency_records_and_sends() {
+    let _guard = serial();
+    let (bus, mut port, mut stack) = started(9);
+    let e = Emergency {
+        code: 0x8130,
+        register: 0x11,
+        manufacturer: [1, 2, 3, 4, 5],
+    };
+    stack.send_emergency(&mut port, bus.now(), e).unwrap();
+    // No 0x1014 in this dictionary: predefined 0x80 + node-ID.
+    assert_eq!(
+        bus.trace(),
+        vec!["  can0  089   [8]  30 81 11 01 02 03 04 05"]
+    );
+    assert_eq!(decl::get(&ERR_REG), [0x11]);
+}
