@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# The complete test run: everything CI checks, in one command.
+#   scripts/test.sh            all stages
+#   scripts/test.sh rust c     only the named stages
+# Stages: lint rust header c peer target bigendian miri fuzz bench
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ROOT=$(pwd)
+export PATH="$HOME/.cargo/bin:$PATH"
+export CARGO_TERM_COLOR=never
+
+scripts/setup.sh
+
+STAGES=("$@")
+if [ "${#STAGES[@]}" -eq 0 ]; then
+    STAGES=(lint rust header c peer target bigendian miri fuzz bench)
+fi
+
+stage() { printf '\n=== %s ===\n' "$*"; }
+started=$(date +%s)
+
+run_stage() {
+    case "$1" in
+    lint)
+        stage "format and lints"
+        cargo fmt --all -- --check
+        cargo clippy --all-targets -- -D warnings
+        cargo clippy --lib --no-default-features -- -D warnings
+        cargo clippy --lib --features srdo-static-mapping,srdo-granularity-16 -- -D warnings
+        ;;
+    rust)
+        stage "cargo test (default switches)"
+        cargo test -q
+        stage "cargo test (static mapping, granularity 16, timestamps)"
+        CARGO_TARGET_DIR=target/variant-a cargo test -q --features srdo-static-mapping,srdo-granularity-16,cdrv-timestamp
+        stage "cargo test (no GFC, no program monitor, SRVT checked before 2nd frame, dummy mapping, gaps)"
+        CARGO_TARGET_DIR=target/variant-b cargo test -q --no-default-features --features srdo-check-srvt-before-1strx,srdo-dummy-mapping,srdo-allow-gaps
+        ;;
+    header)
+        stage "cbindgen --verify (include/cop.h is up to date)"
+        cbindgen --config cbindgen.toml --crate cop --output include/cop.h --verify
+        ;;
+    c)
+        stage "CMake build and CTest (ASan/UBSan)"
+        cmake -S . -B build -DCMAKE_BUILD_TYPE=Debug >/dev/null
+        cmake --build build -j2
+        ctest --test-dir build --output-on-failure -j2
+        ;;
+    peer)
+        [ -x scripts/peer.sh ] || { echo "peer tests: scripts/peer.sh missing"; exit 1; }
+        stage "python-canopen peer"
+        scripts/peer.sh
+        ;;
+    target)
+        [ -x scripts/tms570.sh ] || { echo "target check: scripts/tms570.sh missing"; exit 1; }
+        stage "TMS570 (armebv7r-none-eabihf) build and link check"
+        scripts/tms570.sh
+        ;;
+    bigendian)
+        [ -x scripts/bigendian.sh ] || { echo "big-endian run: scripts/bigendian.sh missing"; exit 1; }
+        stage "big-endian (s390x under qemu)"
+        scripts/bigendian.sh
+        ;;
+    miri)
+        [ -x scripts/miri.sh ] || { echo "miri: scripts/miri.sh missing"; exit 1; }
+        stage "Miri"
+        scripts/miri.sh
+        ;;
+    fuzz)
+        [ -x scripts/fuzz.sh ] || { echo "fuzz: scripts/fuzz.sh missing"; exit 1; }
+        stage "fuzz smoke runs"
+        scripts/fuzz.sh smoke
+        ;;
+    bench)
+        [ -x scripts/bench.sh ] || { echo "bench: scripts/bench.sh missing"; exit 1; }
+        stage "benchmark table"
+        scripts/bench.sh
+        ;;
+    *)
+        echo "unknown stage $1" >&2
+        exit 2
+        ;;
+    esac
+}
+
+for s in "${STAGES[@]}"; do
+    run_stage "$s"
+done
+printf '\nall stages passed (%s) in %ds\n' "${STAGES[*]}" $(( $(date +%s) - started ))
