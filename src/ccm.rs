@@ -26,7 +26,9 @@
 use crate::emcy::EmcyProducer;
 use crate::error::{CopKernel, CopResult, OdError};
 use crate::event::{Action, ActionQueue, Event, Internal, NmtEvent, NmtState};
+use crate::hbc::HeartbeatConsumer;
 use crate::heartbeat::HeartbeatProducer;
+use crate::nmtm::NmtMaster;
 use crate::od::{ByteOrder, Object, ObjectDictionary, Staged, WriteHooks};
 use crate::port::{CanId, CanPort, Priority, RxFrame, Ticks};
 use crate::sdo::SdoServer;
@@ -77,6 +79,13 @@ impl NmtCommand {
 enum Phase {
     Overrun,
     Receive,
+    /// SRDO timers (resumable).
+    SrdoTimers,
+    /// Heartbeat consumer (resumable).
+    HbcTimers,
+    /// NMT master guarding (resumable).
+    NmtmTimers,
+    /// SDO timeout, heartbeat producer, delayed emergencies.
     Timers,
     Idle,
 }
@@ -93,6 +102,8 @@ pub struct Stack {
     guard_toggle: bool,
     sdo_subscribed: Option<CanId>,
     hb: HeartbeatProducer,
+    hbc: HeartbeatConsumer,
+    nmtm: NmtMaster,
     emcy: EmcyProducer,
     sdo: SdoServer,
     srdo: Srdo,
@@ -105,6 +116,7 @@ struct Hooks<'a> {
     now: Ticks,
     srdo: &'a mut Srdo,
     hb: &'a mut HeartbeatProducer,
+    hbc: &'a mut HeartbeatConsumer,
     emcy: &'a mut EmcyProducer,
     sdo_changed: bool,
 }
@@ -131,6 +143,7 @@ impl WriteHooks for Hooks<'_> {
     fn after_store(&mut self, od: &ObjectDictionary, obj: &Object) {
         match obj.index() {
             crate::heartbeat::PRODUCER_TIME_INDEX => self.hb.reconfigure(od, self.now),
+            crate::hbc::CONSUMER_TIME_INDEX => self.hbc.reconfigure(od),
             crate::emcy::COB_ID_INDEX | crate::emcy::INHIBIT_INDEX => {
                 self.emcy.reconfigure(od, self.node)
             }
@@ -161,6 +174,8 @@ impl Stack {
             guard_toggle: false,
             sdo_subscribed: None,
             hb: HeartbeatProducer::new(),
+            hbc: HeartbeatConsumer::new(),
+            nmtm: NmtMaster::new(),
             emcy: EmcyProducer::new(),
             sdo: SdoServer::new(),
             srdo: Srdo::new(),
@@ -221,6 +236,40 @@ impl Stack {
         &mut self.srdo
     }
 
+    /// The heartbeat consumer.
+    pub fn hbc(&self) -> &HeartbeatConsumer {
+        &self.hbc
+    }
+
+    /// The heartbeat consumer, mutable.
+    pub fn hbc_mut(&mut self) -> &mut HeartbeatConsumer {
+        &mut self.hbc
+    }
+
+    /// The NMT master.
+    pub fn nmtm(&self) -> &NmtMaster {
+        &self.nmtm
+    }
+
+    /// The NMT master, mutable.
+    pub fn nmtm_mut(&mut self) -> &mut NmtMaster {
+        &mut self.nmtm
+    }
+
+    /// `CcmSendNmtCommand`: NMT module control to `node` (0 = all).
+    /// The command also applies to this node when it is addressed, as
+    /// CiA 301 requires of a master that is itself an NMT slave.
+    pub fn send_nmt_command(&mut self, port: &mut impl CanPort, node: u8, cs: NmtCs) -> CopResult {
+        if !self.connected {
+            return Err(CopKernel::NmtStateError);
+        }
+        NmtMaster::send_command(port, node, cs)?;
+        if node == 0 || node == self.node_id {
+            self.nmt_command(cs);
+        }
+        Ok(())
+    }
+
     /// The heartbeat producer.
     pub fn heartbeat(&self) -> &HeartbeatProducer {
         &self.hb
@@ -260,13 +309,26 @@ impl Stack {
                 }
                 Phase::Receive => match port.receive() {
                     Some(f) => self.on_frame(port, &f, now),
-                    None => self.phase = Phase::Timers,
+                    None => self.phase = Phase::SrdoTimers,
                 },
-                Phase::Timers => {
+                Phase::SrdoTimers => {
                     if self.srdo.poll(&self.od, self.state, now, &mut self.queue) {
-                        self.timers(port, now);
-                        self.phase = Phase::Idle;
+                        self.phase = Phase::HbcTimers;
                     }
+                }
+                Phase::HbcTimers => {
+                    if !self.connected || self.hbc.poll(now, &mut self.queue) {
+                        self.phase = Phase::NmtmTimers;
+                    }
+                }
+                Phase::NmtmTimers => {
+                    if !self.connected || self.nmtm.poll(port, now, &mut self.queue) {
+                        self.phase = Phase::Timers;
+                    }
+                }
+                Phase::Timers => {
+                    self.timers(port, now);
+                    self.phase = Phase::Idle;
                 }
                 Phase::Idle => return None,
             }
@@ -319,6 +381,14 @@ impl Stack {
             }
             return;
         }
+        if !f.rtr {
+            if let Some(ec) = nmt::decode_error_control(f) {
+                if !self.nmtm.on_error_control(f, &mut self.queue) {
+                    self.hbc.on_heartbeat(ec, rx.time, &mut self.queue);
+                }
+                return;
+            }
+        }
         if f.rtr && f.id == nmt::error_control_id(self.node_id) {
             let reply = nmt::encode_guard_reply(self.node_id, self.state as u8, self.guard_toggle);
             if port.send(&reply, Priority::Low).is_ok() {
@@ -342,6 +412,7 @@ impl Stack {
                 now,
                 srdo: &mut self.srdo,
                 hb: &mut self.hb,
+                hbc: &mut self.hbc,
                 emcy: &mut self.emcy,
                 sdo_changed: false,
             };
@@ -424,6 +495,7 @@ impl Stack {
             Internal::RestoreCommunication => self.od.restore_defaults(0x1000, 0x1FFF),
             Internal::Reconfigure => {
                 self.hb.reconfigure(&self.od, now);
+                self.hbc.reconfigure(&self.od);
                 self.emcy.reconfigure(&self.od, self.node_id);
                 self.sdo.reconfigure(&self.od, self.node_id);
                 self.subscribe(port);
@@ -442,7 +514,12 @@ impl Stack {
     /// subscribes its own COB-IDs.
     fn subscribe(&mut self, port: &mut impl CanPort) {
         let _ = port.subscribe(CanId::std_masked(nmt::NMT_COB_ID), Priority::High);
-        let _ = port.subscribe(nmt::error_control_id(self.node_id), Priority::Low);
+        // Error control of every other node: guarding requests to this node,
+        // heartbeats for the consumer, boot-ups and guard answers for the
+        // master.
+        for node in 1..=127u8 {
+            let _ = port.subscribe(nmt::error_control_id(node), Priority::Low);
+        }
         let sdo = self.sdo.rx_id();
         if sdo != self.sdo_subscribed {
             if let Some(old) = self.sdo_subscribed {
@@ -500,6 +577,7 @@ impl Stack {
             now,
             srdo: &mut self.srdo,
             hb: &mut self.hb,
+            hbc: &mut self.hbc,
             emcy: &mut self.emcy,
             sdo_changed: false,
         };

@@ -127,9 +127,11 @@ fn init(p: &tCcmInitParam) -> CopResult {
     global::install(Instance {
         stack,
         port: CdrvPort,
-        nmt_callback: p.m_fpNmtEventCallback,
-        error_callback: None,
-        srdo_callbacks,
+        callbacks: global::Callbacks {
+            nmt: p.m_fpNmtEventCallback,
+            srdo: srdo_callbacks,
+            ..global::Callbacks::default()
+        },
     })
 }
 
@@ -276,7 +278,7 @@ pub extern "C" fn CcmNmtsExecCommand(NmtCommand_p: tNmtCommand) -> tCopKernel {
 /// `CcmRegisterErrorCallback`.
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmRegisterErrorCallback(fpErrorCallback_p: tCcmErrorCallback) {
-    let _ = global::with(|i| i.error_callback = fpErrorCallback_p);
+    let _ = global::with(|i| i.callbacks.error = fpErrorCallback_p);
 }
 
 /// `CcmConfigHbp`: sets the producer heartbeat time (writes 0x1017).

@@ -12,11 +12,30 @@
 use core::cell::{Cell, UnsafeCell};
 
 use super::driver::{CdrvPort, TgtClock};
-use super::types::{tCcmErrorCallback, tCcmNmtEventCallback, tSrdoAppCallbacks};
+use super::types::{
+    tAppHbcEventCallback, tAppNmtmEventCallback, tCcmErrorCallback, tCcmNmtEventCallback,
+    tSrdoAppCallbacks,
+};
 use crate::ccm::Stack;
 use crate::error::CopKernel;
 use crate::event::Event;
 use crate::port::Clock;
+
+/// The application's callbacks (function pointers, copied out of the
+/// instance before they are called).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Callbacks {
+    /// `m_fpNmtEventCallback`.
+    pub nmt: tCcmNmtEventCallback,
+    /// `CcmRegisterErrorCallback`.
+    pub error: tCcmErrorCallback,
+    /// The application's SRDO callbacks (from objdef.h).
+    pub srdo: Option<tSrdoAppCallbacks>,
+    /// `CcmInitNmtmEx`.
+    pub nmtm: tAppNmtmEventCallback,
+    /// `CcmInitHbcEx`.
+    pub hbc: tAppHbcEventCallback,
+}
 
 /// Everything the C API keeps between calls.
 pub struct Instance {
@@ -24,12 +43,8 @@ pub struct Instance {
     pub stack: Stack,
     /// The driver.
     pub port: CdrvPort,
-    /// `m_fpNmtEventCallback`.
-    pub nmt_callback: tCcmNmtEventCallback,
-    /// `CcmRegisterErrorCallback`.
-    pub error_callback: tCcmErrorCallback,
-    /// The application's SRDO callbacks (from objdef.h).
-    pub srdo_callbacks: Option<tSrdoAppCallbacks>,
+    /// The application's callbacks.
+    pub callbacks: Callbacks,
 }
 
 /// Instances: one on a target. Host builds (`std`) keep several so that a
@@ -122,10 +137,11 @@ pub fn remove() -> Result<Instance, CopKernel> {
 }
 
 /// Calls the application for one event. Runs with the instance released.
-fn dispatch(ev: Event, nmt: tCcmNmtEventCallback, srdo: Option<tSrdoAppCallbacks>) {
+fn dispatch(ev: Event, cbs: Callbacks) {
+    let srdo = cbs.srdo;
     match ev {
         Event::Nmt(e) => {
-            if let Some(cb) = nmt {
+            if let Some(cb) = cbs.nmt {
                 // SAFETY: the application's NMT callback from tCcmInitParam.
                 let ret = unsafe { cb(e as u32) };
                 if ret != 0 {
@@ -157,16 +173,26 @@ fn dispatch(ev: Event, nmt: tCcmNmtEventCallback, srdo: Option<tSrdoAppCallbacks
                 unsafe { cb(e as u32) };
             }
         }
-        Event::Hbc(..) | Event::Nmtm(..) | Event::SdocFinished { .. } | Event::Emcc(..) => {
-            super::master::dispatch(ev);
+        Event::Hbc(node, e) => {
+            if let Some(cb) = cbs.hbc {
+                // SAFETY: the callback registered with CcmInitHbcEx.
+                unsafe { cb(node, e as u32) };
+            }
         }
+        Event::Nmtm(node, e) => {
+            if let Some(cb) = cbs.nmtm {
+                // SAFETY: the callback registered with CcmInitNmtmEx.
+                unsafe { cb(node, e as u32) };
+            }
+        }
+        Event::SdocFinished { .. } | Event::Emcc(..) => super::master::dispatch(ev),
     }
 }
 
 /// Reports an error to the callback registered with
 /// `CcmRegisterErrorCallback` (if any).
 pub fn report_error(code: CopKernel) {
-    let cb = with(|i| i.error_callback).ok().flatten();
+    let cb = with(|i| i.callbacks.error).ok().flatten();
     if let Some(cb) = cb {
         // SAFETY: the application's error callback; no argument object.
         unsafe { cb(core::ptr::null_mut(), code.code()) };
@@ -178,9 +204,9 @@ pub fn report_error(code: CopKernel) {
 pub fn pump(mut next: impl FnMut(&mut Instance, crate::port::Ticks) -> Option<Event>) {
     loop {
         let now = TgtClock.now();
-        let step = with(|i| next(i, now).map(|e| (e, i.nmt_callback, i.srdo_callbacks)));
+        let step = with(|i| next(i, now).map(|e| (e, i.callbacks)));
         match step {
-            Ok(Some((e, nmt, srdo))) => dispatch(e, nmt, srdo),
+            Ok(Some((e, cbs))) => dispatch(e, cbs),
             _ => break,
         }
     }

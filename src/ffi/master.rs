@@ -1,10 +1,260 @@
-//! Master-side callbacks (heartbeat consumer, NMT master, SDO client,
-//! emergency consumer). The core does not produce these events yet; they
-//! are ignored until the master services are registered.
+//! Master-side C API: NMT master (`CcmInitNmtm`, `CcmSendNmtCommand`,
+//! node guarding) and heartbeat consumer (`CcmInitHbc`, ...).
+//!
+//! Conventions as in [`super::ccm`]: `tCopKernel` results, pointers checked
+//! first, kCopIllegalInstance before `CcmInitCANopen`.
 
+use super::driver::TgtClock;
+use super::global::{self, Instance};
+use super::types::*;
+use crate::error::{CopKernel, CopResult, to_code};
 use crate::event::Event;
+use crate::port::Clock;
+use crate::wire::nmt::NmtCs;
 
-/// Calls the application for a master-side event.
+fn code(r: Result<CopResult, CopKernel>) -> tCopKernel {
+    match r {
+        Ok(inner) => to_code(inner),
+        Err(e) => e.code(),
+    }
+}
+
+/// Master-side events without a callback of their own yet (SDO client,
+/// emergency consumer) are dropped here.
 pub fn dispatch(ev: Event) {
     let _ = ev;
+}
+
+/// `CcmInitNmtm`: enables the NMT master (boot-up detection, guarding).
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmInitNmtm() -> tCopKernel {
+    code(global::with(|i| {
+        i.stack.nmtm_mut().enable();
+        Ok(())
+    }))
+}
+
+/// `CcmInitNmtmEx`: as `CcmInitNmtm`, with a callback for boot-up and
+/// guarding events (`kNmtErrCtrlEvBootupReceived`, `kNmtErrCtrlEvLg*`).
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmInitNmtmEx(pfnCallback_p: tAppNmtmEventCallback) -> tCopKernel {
+    code(global::with(|i| {
+        i.stack.nmtm_mut().enable();
+        i.callbacks.nmtm = pfnCallback_p;
+        Ok(())
+    }))
+}
+
+/// `CcmDefineSlaveTab`: the slaves the master manages.
+/// kCopInvalidParam (NULL with n > 0), kCopNmtmNoFreeSlaveEntry,
+/// kCopNmtmInvalidSlaveNodeId, kCopNmtmSlaveNodeExist.
+///
+/// # Safety
+/// `pbSlaveTab_p` must be valid for `bNumOfSlaves_p` bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmDefineSlaveTab(
+    pbSlaveTab_p: *const BYTE,
+    bNumOfSlaves_p: BYTE,
+) -> tCopKernel {
+    let n = usize::from(bNumOfSlaves_p);
+    if pbSlaveTab_p.is_null() && n > 0 {
+        return CopKernel::InvalidParam.code();
+    }
+    let nodes: &[u8] = if n == 0 {
+        &[]
+    } else {
+        // SAFETY: the caller guarantees n readable bytes.
+        unsafe { core::slice::from_raw_parts(pbSlaveTab_p, n) }
+    };
+    code(global::with(|i| i.stack.nmtm_mut().define_slaves(nodes)))
+}
+
+/// `CcmSendNmtCommand`: NMT module control to a node (0 = all nodes; the
+/// command applies to this node too when it is addressed).
+/// kCopNmtUnknownCommand, kCopNmtmInvalidSlaveNodeId, kCopNmtStateError
+/// before `CcmConnectToNet`, or the driver's code.
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmSendNmtCommand(bNodeId_p: BYTE, NmtCommand_p: tNmtCommand) -> tCopKernel {
+    let cs = match NmtCommand_p {
+        0x0001 => NmtCs::Start,
+        0x0002 => NmtCs::Stop,
+        0x0080 | 0x0180 => NmtCs::EnterPreOperational,
+        0x0081 => NmtCs::ResetNode,
+        0x0082 => NmtCs::ResetCommunication,
+        _ => return CopKernel::NmtUnknownCommand.code(),
+    };
+    let r = global::with(|i| i.stack.send_nmt_command(&mut i.port, bNodeId_p, cs));
+    global::pump(|i, now| i.stack.drain(&mut i.port, now));
+    code(r)
+}
+
+/// `CcmBootNetwork`: "start remote node" to all nodes.
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmBootNetwork() -> tCopKernel {
+    CcmSendNmtCommand(0, 0x0001)
+}
+
+/// `CcmTriggerNodeGuard`: sends one guard request to a slave now.
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmTriggerNodeGuard(bNodeId_p: BYTE) -> tCopKernel {
+    let now = TgtClock.now();
+    code(global::with(|i| {
+        let Instance { stack, port, .. } = i;
+        stack.nmtm_mut().trigger_guard(port, bNodeId_p, now)
+    }))
+}
+
+/// `CcmConfigLgm`: guard time and life time factor of a slave (time 0
+/// stops guarding). kCopInvalidParam for NULL, kCopNmtmSlaveEntryNotExist.
+///
+/// # Safety
+/// `pSlaveParam_p` must be NULL or point to a valid `tNmtmSlaveParam`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmConfigLgm(
+    bNodeId_p: BYTE,
+    pSlaveParam_p: *const tNmtmSlaveParam,
+) -> tCopKernel {
+    if pSlaveParam_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    // SAFETY: checked for NULL.
+    let p = unsafe { *pSlaveParam_p };
+    let now = TgtClock.now();
+    code(global::with(|i| {
+        i.stack.nmtm_mut().configure_guarding(
+            bNodeId_p,
+            p.m_wLifeguardTime,
+            p.m_bLifeguardFactor,
+            now,
+        )
+    }))
+}
+
+/// `CcmNmtmGetSlaveInfo`: what the master knows about a slave.
+///
+/// # Safety
+/// `pSlaveInfo_p` must be NULL or valid for writing a `tNmtmSlaveInfo`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmNmtmGetSlaveInfo(
+    bNodeId_p: BYTE,
+    pSlaveInfo_p: *mut tNmtmSlaveInfo,
+) -> tCopKernel {
+    if pSlaveInfo_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    let r = global::with(|i| i.stack.nmtm().slave_info(bNodeId_p));
+    match r {
+        Ok(Ok(info)) => {
+            // SAFETY: checked for NULL; the caller owns the structure.
+            unsafe {
+                *pSlaveInfo_p = tNmtmSlaveInfo {
+                    m_bNodeState: info.state,
+                    m_bMissedAnswers: info.misses,
+                    m_wLifeguardTime: info.guard_ms,
+                    m_bLifeguardFactor: info.life_factor,
+                }
+            };
+            0
+        }
+        Ok(Err(e)) | Err(e) => e.code(),
+    }
+}
+
+/// `CcmInitHbc`: the heartbeat consumer runs from object 0x1016 (always
+/// active in this library); kept for source compatibility.
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmInitHbc() -> tCopKernel {
+    code(global::with(|_| Ok(())))
+}
+
+/// `CcmInitHbcEx`: registers the heartbeat consumer callback
+/// (`kNmtErrCtrlEvHbcConnected`, `...ConnectionLost`, `...NodeStateChanged`).
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmInitHbcEx(fpHbcEventCallback_p: tAppHbcEventCallback) -> tCopKernel {
+    code(global::with(|i| {
+        i.callbacks.hbc = fpHbcEventCallback_p;
+        Ok(())
+    }))
+}
+
+/// `CcmHbcDefineProducerTab`: supervises producers by writing their entries
+/// into 0x1016 (`bSubindex_p`, 1-based) — through the dictionary, so the
+/// object and the consumer agree. kCopInvalidParam (NULL), kCopHbcNoFreeEntry
+/// (subindex 0 or beyond 0x1016), kCopHbcEntryAlreadyExist (a node twice).
+///
+/// # Safety
+/// `pbProducerTab_p` must be valid for `bNumOfProducer_p` entries.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmHbcDefineProducerTab(
+    pbProducerTab_p: *const tHbcProdParam,
+    bNumOfProducer_p: BYTE,
+) -> tCopKernel {
+    let n = usize::from(bNumOfProducer_p);
+    if pbProducerTab_p.is_null() && n > 0 {
+        return CopKernel::InvalidParam.code();
+    }
+    let tab: &[tHbcProdParam] = if n == 0 {
+        &[]
+    } else {
+        // SAFETY: the caller guarantees n entries.
+        unsafe { core::slice::from_raw_parts(pbProducerTab_p, n) }
+    };
+    for (k, p) in tab.iter().enumerate() {
+        if tab
+            .iter()
+            .take(k)
+            .any(|q| q.bProducerNodeId_p == p.bProducerNodeId_p)
+        {
+            return CopKernel::HbcEntryAlreadyExist.code();
+        }
+    }
+    let now = TgtClock.now();
+    code(global::with(|i| {
+        for p in tab {
+            if p.bSubindex_p == 0 {
+                return Err(CopKernel::HbcNoFreeEntry);
+            }
+            let v = (u32::from(p.bProducerNodeId_p) << 16) | u32::from(p.wHeartbeatTime_p);
+            i.stack
+                .write_object(
+                    crate::hbc::CONSUMER_TIME_INDEX,
+                    p.bSubindex_p,
+                    crate::od::ByteOrder::Wire,
+                    &v.to_le_bytes(),
+                    now,
+                )
+                .map_err(|e| match e.kernel {
+                    CopKernel::ObdIndexNotExist | CopKernel::ObdSubindexNotExist => {
+                        CopKernel::HbcNoFreeEntry
+                    }
+                    k => k,
+                })?;
+        }
+        Ok(())
+    }))
+}
+
+/// `CcmHbcGetNodeState`: the last NMT state a supervised node reported.
+/// kCopInvalidParam (NULL), kCopHbcEntryNotExist (node not supervised or
+/// not heard yet).
+///
+/// # Safety
+/// `pNodeState_p` must be NULL or valid for writing one byte.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmHbcGetNodeState(
+    bNodeId_p: BYTE,
+    pNodeState_p: *mut BYTE,
+) -> tCopKernel {
+    if pNodeState_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    match global::with(|i| i.stack.hbc().node_state(bNodeId_p)) {
+        Ok(Some(s)) => {
+            // SAFETY: checked for NULL.
+            unsafe { *pNodeState_p = s };
+            0
+        }
+        Ok(None) => CopKernel::HbcEntryNotExist.code(),
+        Err(e) => e.code(),
+    }
 }

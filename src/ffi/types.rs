@@ -139,6 +139,51 @@ pub type tObdInitRam = Option<unsafe extern "C" fn(pInitParam_p: *mut c_void) ->
 pub type tCcmErrorCallback =
     Option<unsafe extern "C" fn(pArg_p: *mut c_void, ErrorCode_p: tCopKernel) -> tCopKernel>;
 
+/// `tNmtErrCtrlEvent`.
+pub type tNmtErrCtrlEvent = tFastByte;
+/// `tAppNmtmEventCallback`.
+pub type tAppNmtmEventCallback =
+    Option<unsafe extern "C" fn(bNodeId_p: BYTE, NmtmEvent_p: tNmtErrCtrlEvent) -> tCopKernel>;
+/// `tAppHbcEventCallback`.
+pub type tAppHbcEventCallback =
+    Option<unsafe extern "C" fn(bNodeId_p: BYTE, HbcEvent_p: tNmtErrCtrlEvent) -> tCopKernel>;
+
+/// `tHbcProdParam` (`CcmHbcDefineProducerTab`; field names as in cop.h).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct tHbcProdParam {
+    /// Heartbeat time of the producer in ms.
+    pub wHeartbeatTime_p: WORD,
+    /// Producer node-ID.
+    pub bProducerNodeId_p: BYTE,
+    /// Subindex of 0x1016 (1..) the entry occupies.
+    pub bSubindex_p: BYTE,
+}
+
+/// `tNmtmSlaveParam` (`CcmConfigLgm`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct tNmtmSlaveParam {
+    /// Guard time in ms.
+    pub m_wLifeguardTime: WORD,
+    /// Life time factor.
+    pub m_bLifeguardFactor: BYTE,
+}
+
+/// `tNmtmSlaveInfo` (`CcmNmtmGetSlaveInfo`; this library's definition).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct tNmtmSlaveInfo {
+    /// Last NMT state (kNodeState*), 0 = boot-up or unknown.
+    pub m_bNodeState: BYTE,
+    /// Unanswered guard requests in a row.
+    pub m_bMissedAnswers: BYTE,
+    /// Guard time in ms.
+    pub m_wLifeguardTime: WORD,
+    /// Life time factor.
+    pub m_bLifeguardFactor: BYTE,
+}
+
 /// `tCcmInitParam` (single instance, `COP_USE_CDRV_FUNCTION_POINTER` off).
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
@@ -308,6 +353,9 @@ pub struct tEmcParam {
 // Layout checks. Sizes for a 32-bit target (the product: TMS570) and for a
 // 64-bit host (tests) differ only where pointers appear.
 static_assertions::const_assert_eq!(core::mem::size_of::<tSrdoCommuParam>(), 4);
+static_assertions::const_assert_eq!(core::mem::size_of::<tHbcProdParam>(), 4);
+static_assertions::const_assert_eq!(core::mem::size_of::<tNmtmSlaveParam>(), 4);
+static_assertions::const_assert_eq!(core::mem::size_of::<tNmtmSlaveInfo>(), 6);
 static_assertions::const_assert_eq!(core::mem::size_of::<tEmcParam>(), 10);
 static_assertions::const_assert_eq!(
     core::mem::size_of::<tCdrvHwParam>(),

@@ -1,0 +1,211 @@
+//! Heartbeat consumer (object 0x1016, CiA 301 7.2.8.3.2.2).
+//!
+//! Each entry of 0x1016 holds `node-ID << 16 | heartbeat time (ms)`; an
+//! entry with node-ID 0 or time 0 is unused. Supervision of a node starts
+//! with its first heartbeat (CiA 301); when the time passes without a new
+//! one the node is reported lost once, and connected again with its next
+//! heartbeat.
+
+use crate::event::{ActionQueue, ErrCtrlEvent, Event};
+use crate::od::ObjectDictionary;
+use crate::port::{Ticks, ms_to_ticks};
+use crate::wire::nmt::ErrorControl;
+
+/// Consumer heartbeat time object.
+pub const CONSUMER_TIME_INDEX: u16 = 0x1016;
+
+/// Capacity: `HBC_MAX_CONSUMER_IN_OBD`.
+pub const CAPACITY: usize = crate::config::HBC_MAX_CONSUMER_IN_OBD;
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+enum Supervision {
+    /// No heartbeat seen yet.
+    #[default]
+    Waiting,
+    /// Heartbeats arrive in time.
+    Active,
+    /// The time passed; reported.
+    Lost,
+}
+
+#[derive(Clone, Copy, Debug, Default)]
+struct Entry {
+    node: u8,
+    time_ms: u16,
+    deadline: Ticks,
+    state: Option<u8>,
+    supervision: Supervision,
+}
+
+/// The heartbeat consumer.
+#[derive(Clone, Debug)]
+pub struct HeartbeatConsumer {
+    entries: [Entry; CAPACITY],
+}
+
+impl Default for HeartbeatConsumer {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl HeartbeatConsumer {
+    /// A consumer without entries.
+    pub const fn new() -> Self {
+        HeartbeatConsumer {
+            entries: [Entry {
+                node: 0,
+                time_ms: 0,
+                deadline: Ticks(0),
+                state: None,
+                supervision: Supervision::Waiting,
+            }; CAPACITY],
+        }
+    }
+
+    /// Reads 0x1016 (absent: no supervision). Entries beyond the capacity
+    /// are ignored; supervision restarts for every node.
+    pub fn reconfigure(&mut self, od: &ObjectDictionary) {
+        for (i, e) in self.entries.iter_mut().enumerate() {
+            let v = u8::try_from(i + 1)
+                .ok()
+                .and_then(|sub| od.read_uint(CONSUMER_TIME_INDEX, sub).ok())
+                .unwrap_or(0) as u32;
+            *e = Entry {
+                node: ((v >> 16) & 0x7F) as u8,
+                time_ms: (v & 0xFFFF) as u16,
+                ..Entry::default()
+            };
+        }
+    }
+
+    /// Sets one entry directly (`CcmHbcDefineProducerTab`).
+    /// `false` when `slot` is outside the capacity.
+    pub fn define(&mut self, slot: usize, node: u8, time_ms: u16) -> bool {
+        match self.entries.get_mut(slot) {
+            Some(e) => {
+                *e = Entry {
+                    node,
+                    time_ms,
+                    ..Entry::default()
+                };
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// The last state a node reported, if it is supervised and was heard.
+    pub fn node_state(&self, node: u8) -> Option<u8> {
+        self.entries
+            .iter()
+            .find(|e| e.node == node && e.time_ms > 0)
+            .and_then(|e| e.state)
+    }
+
+    /// True when `node` is supervised.
+    pub fn supervises(&self, node: u8) -> bool {
+        self.entries.iter().any(|e| e.node == node && e.time_ms > 0)
+    }
+
+    /// A heartbeat or boot-up message arrived.
+    pub fn on_heartbeat(&mut self, hb: ErrorControl, time: Ticks, q: &mut ActionQueue) {
+        for e in self
+            .entries
+            .iter_mut()
+            .filter(|e| e.node == hb.node && e.time_ms > 0)
+        {
+            e.deadline = time.plus(ms_to_ticks(u32::from(e.time_ms)));
+            match e.supervision {
+                Supervision::Waiting | Supervision::Lost => {
+                    e.supervision = Supervision::Active;
+                    q.emit(Event::Hbc(hb.node, ErrCtrlEvent::HbcConnected));
+                }
+                Supervision::Active => {
+                    if e.state.is_some_and(|s| s != hb.state) {
+                        q.emit(Event::Hbc(hb.node, ErrCtrlEvent::HbcNodeStateChanged));
+                    }
+                }
+            }
+            e.state = Some(hb.state);
+        }
+    }
+
+    /// Checks the deadlines; reports at most one lost node per call (the
+    /// stack calls again while events are pending). Returns `true` when no
+    /// node was reported.
+    pub fn poll(&mut self, now: Ticks, q: &mut ActionQueue) -> bool {
+        for e in self.entries.iter_mut() {
+            if e.time_ms > 0 && e.supervision == Supervision::Active && now.is_after(e.deadline) {
+                e.supervision = Supervision::Lost;
+                q.emit(Event::Hbc(e.node, ErrCtrlEvent::HbcConnectionLost));
+                return false;
+            }
+        }
+        true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn hb(node: u8, state: u8) -> ErrorControl {
+        ErrorControl { node, state }
+    }
+
+    #[test]
+    fn supervision_starts_with_first_heartbeat() {
+        let mut c = HeartbeatConsumer::new();
+        assert!(c.define(0, 5, 100));
+        let mut q = ActionQueue::new();
+        // Nothing is reported before the first heartbeat, however long.
+        assert!(c.poll(Ticks(1_000_000), &mut q));
+        c.on_heartbeat(hb(5, 0x7F), Ticks(0), &mut q);
+        assert_eq!(
+            q.pop(),
+            Some(crate::event::Action::Emit(Event::Hbc(
+                5,
+                ErrCtrlEvent::HbcConnected
+            )))
+        );
+        // Exactly at the limit is still in time; later is lost, once.
+        assert!(c.poll(Ticks(1000), &mut q));
+        assert!(!c.poll(Ticks(1001), &mut q));
+        assert_eq!(
+            q.pop(),
+            Some(crate::event::Action::Emit(Event::Hbc(
+                5,
+                ErrCtrlEvent::HbcConnectionLost
+            )))
+        );
+        assert!(c.poll(Ticks(5000), &mut q));
+        c.on_heartbeat(hb(5, 0x05), Ticks(5000), &mut q);
+        assert_eq!(
+            q.pop(),
+            Some(crate::event::Action::Emit(Event::Hbc(
+                5,
+                ErrCtrlEvent::HbcConnected
+            )))
+        );
+        c.on_heartbeat(hb(5, 0x7F), Ticks(5500), &mut q);
+        assert_eq!(
+            q.pop(),
+            Some(crate::event::Action::Emit(Event::Hbc(
+                5,
+                ErrCtrlEvent::HbcNodeStateChanged
+            )))
+        );
+        assert_eq!(c.node_state(5), Some(0x7F));
+    }
+
+    #[test]
+    fn unsupervised_nodes_are_ignored() {
+        let mut c = HeartbeatConsumer::new();
+        let mut q = ActionQueue::new();
+        c.on_heartbeat(hb(9, 0x05), Ticks(0), &mut q);
+        assert!(q.is_empty());
+        assert_eq!(c.node_state(9), None);
+        assert!(!c.define(CAPACITY, 1, 1));
+    }
+}

@@ -1,0 +1,284 @@
+//! NMT master: module control commands, boot-up detection and node
+//! guarding of slaves (life guarding master, CiA 301 7.2.8.3.2.1).
+
+use crate::error::{CopKernel, CopResult};
+use crate::event::{ActionQueue, ErrCtrlEvent, Event};
+use crate::port::{CanFrame, CanPort, Priority, Ticks, ms_to_ticks};
+use crate::wire::nmt::{self, NmtCs};
+
+/// Capacity: `NMTM_MAX_SLAVE_ENTRIES`.
+pub const CAPACITY: usize = crate::config::NMTM_MAX_SLAVE_ENTRIES;
+
+#[derive(Clone, Copy, Debug, Default)]
+struct Slave {
+    node: u8,
+    guard_ms: u16,
+    life_factor: u8,
+    next_guard: Ticks,
+    awaiting: bool,
+    misses: u8,
+    toggle: bool,
+    state: Option<u8>,
+    no_answer_reported: bool,
+}
+
+/// What the master knows about a slave (`CcmNmtmGetSlaveInfo`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SlaveInfo {
+    /// Last state reported by guarding or boot-up (0 = boot-up / unknown).
+    pub state: u8,
+    /// Guard time in ms (0 = not guarded).
+    pub guard_ms: u16,
+    /// Life time factor.
+    pub life_factor: u8,
+    /// Unanswered guard requests in a row.
+    pub misses: u8,
+}
+
+/// The NMT master.
+#[derive(Clone, Debug)]
+pub struct NmtMaster {
+    enabled: bool,
+    slaves: [Slave; CAPACITY],
+}
+
+impl Default for NmtMaster {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+fn valid_node(node: u8) -> CopResult {
+    if (1..=127).contains(&node) {
+        Ok(())
+    } else {
+        Err(CopKernel::NmtmInvalidSlaveNodeId)
+    }
+}
+
+impl NmtMaster {
+    /// A disabled master (this node is a slave only).
+    pub const fn new() -> Self {
+        NmtMaster {
+            enabled: false,
+            slaves: [Slave {
+                node: 0,
+                guard_ms: 0,
+                life_factor: 0,
+                next_guard: Ticks(0),
+                awaiting: false,
+                misses: 0,
+                toggle: false,
+                state: None,
+                no_answer_reported: false,
+            }; CAPACITY],
+        }
+    }
+
+    /// `CcmInitNmtm`: enables the master (boot-up detection, guarding).
+    pub fn enable(&mut self) {
+        self.enabled = true;
+    }
+
+    /// True after [`NmtMaster::enable`].
+    pub fn is_enabled(&self) -> bool {
+        self.enabled
+    }
+
+    /// `CcmDefineSlaveTab`: the slaves the master manages (replaces the
+    /// list). Codes: kCopNmtmNoFreeSlaveEntry (more than the capacity),
+    /// kCopNmtmInvalidSlaveNodeId, kCopNmtmSlaveNodeExist (duplicate). On
+    /// error the previous list is kept.
+    pub fn define_slaves(&mut self, nodes: &[u8]) -> CopResult {
+        if nodes.len() > CAPACITY {
+            return Err(CopKernel::NmtmNoFreeSlaveEntry);
+        }
+        for (i, n) in nodes.iter().enumerate() {
+            valid_node(*n)?;
+            if nodes.iter().take(i).any(|m| m == n) {
+                return Err(CopKernel::NmtmSlaveNodeExist);
+            }
+        }
+        self.slaves = Self::new().slaves;
+        for (s, n) in self.slaves.iter_mut().zip(nodes) {
+            s.node = *n;
+        }
+        Ok(())
+    }
+
+    fn slave_mut(&mut self, node: u8) -> CopResult<&mut Slave> {
+        valid_node(node)?;
+        self.slaves
+            .iter_mut()
+            .find(|s| s.node == node)
+            .ok_or(CopKernel::NmtmSlaveEntryNotExist)
+    }
+
+    /// `CcmConfigLgm`: guard time (ms) and life time factor of a slave;
+    /// time 0 stops guarding it.
+    pub fn configure_guarding(
+        &mut self,
+        node: u8,
+        guard_ms: u16,
+        life_factor: u8,
+        now: Ticks,
+    ) -> CopResult {
+        let s = self.slave_mut(node)?;
+        s.guard_ms = guard_ms;
+        s.life_factor = life_factor.max(1);
+        s.next_guard = now;
+        s.awaiting = false;
+        s.misses = 0;
+        s.toggle = false;
+        s.no_answer_reported = false;
+        Ok(())
+    }
+
+    /// What the master knows about a slave.
+    pub fn slave_info(&self, node: u8) -> CopResult<SlaveInfo> {
+        valid_node(node)?;
+        let s = self
+            .slaves
+            .iter()
+            .find(|s| s.node == node)
+            .ok_or(CopKernel::NmtmSlaveEntryNotExist)?;
+        Ok(SlaveInfo {
+            state: s.state.unwrap_or(0),
+            guard_ms: s.guard_ms,
+            life_factor: s.life_factor,
+            misses: s.misses,
+        })
+    }
+
+    /// `CcmSendNmtCommand`: NMT module control to one node or all (0).
+    pub fn send_command(port: &mut impl CanPort, node: u8, cs: NmtCs) -> CopResult {
+        if node > 127 {
+            return Err(CopKernel::NmtmInvalidSlaveNodeId);
+        }
+        port.send(&nmt::encode_command(cs, node), Priority::High)
+    }
+
+    /// `CcmTriggerNodeGuard`: sends one guard request now.
+    pub fn trigger_guard(&mut self, port: &mut impl CanPort, node: u8, now: Ticks) -> CopResult {
+        let s = self.slave_mut(node)?;
+        port.send(
+            &CanFrame::remote(nmt::error_control_id(node), 1),
+            Priority::Low,
+        )?;
+        s.awaiting = true;
+        s.next_guard = now.plus(ms_to_ticks(u32::from(s.guard_ms)));
+        Ok(())
+    }
+
+    /// An error control frame (0x701..0x77F, DLC 1) from another node:
+    /// a guard answer when one is awaited, otherwise a heartbeat or boot-up.
+    /// Returns `true` when it was a guard answer (not a heartbeat).
+    pub fn on_error_control(&mut self, frame: &CanFrame, q: &mut ActionQueue) -> bool {
+        let Some(ec) = nmt::decode_error_control(frame) else {
+            return false;
+        };
+        if !self.enabled {
+            return false;
+        }
+        let raw = frame.data[0];
+        if let Some(s) = self
+            .slaves
+            .iter_mut()
+            .find(|s| s.node == ec.node && s.awaiting)
+        {
+            s.awaiting = false;
+            s.misses = 0;
+            s.no_answer_reported = false;
+            let toggle = raw & 0x80 != 0;
+            if toggle != s.toggle {
+                q.emit(Event::Nmtm(ec.node, ErrCtrlEvent::LgToggleError));
+            }
+            s.toggle = !toggle;
+            if s.state.is_some_and(|st| st != ec.state) {
+                q.emit(Event::Nmtm(ec.node, ErrCtrlEvent::LgNodeStateChanged));
+            }
+            s.state = Some(ec.state);
+            return true;
+        }
+        if raw == 0 {
+            if let Some(s) = self.slaves.iter_mut().find(|s| s.node == ec.node) {
+                s.state = Some(0);
+                s.toggle = false;
+            }
+            q.emit(Event::Nmtm(ec.node, ErrCtrlEvent::BootupReceived));
+        }
+        false
+    }
+
+    /// Guarding timers: sends due guard requests and reports a slave that
+    /// missed `life factor` answers in a row (once, until it answers).
+    /// Returns `true` when nothing was reported.
+    pub fn poll(&mut self, port: &mut impl CanPort, now: Ticks, q: &mut ActionQueue) -> bool {
+        if !self.enabled {
+            return true;
+        }
+        for s in self
+            .slaves
+            .iter_mut()
+            .filter(|s| s.node != 0 && s.guard_ms > 0)
+        {
+            if now.is_after(s.next_guard) || now == s.next_guard {
+                if s.awaiting {
+                    s.misses = s.misses.saturating_add(1);
+                }
+                let frame = CanFrame::remote(nmt::error_control_id(s.node), 1);
+                if port.send(&frame, Priority::Low).is_ok() {
+                    s.awaiting = true;
+                }
+                s.next_guard = now.plus(ms_to_ticks(u32::from(s.guard_ms)));
+                if s.misses >= s.life_factor && !s.no_answer_reported {
+                    s.no_answer_reported = true;
+                    q.emit(Event::Nmtm(s.node, ErrCtrlEvent::LgNoAnswer));
+                    return false;
+                }
+            }
+        }
+        true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::event::Action;
+    use crate::port::CanId;
+
+    #[test]
+    fn slave_table_checks() {
+        let mut m = NmtMaster::new();
+        assert_eq!(
+            m.define_slaves(&[0]),
+            Err(CopKernel::NmtmInvalidSlaveNodeId)
+        );
+        assert_eq!(m.define_slaves(&[5, 5]), Err(CopKernel::NmtmSlaveNodeExist));
+        assert!(m.define_slaves(&[5, 6]).is_ok());
+        assert_eq!(
+            m.configure_guarding(7, 100, 3, Ticks(0)),
+            Err(CopKernel::NmtmSlaveEntryNotExist)
+        );
+        assert!(m.configure_guarding(6, 100, 3, Ticks(0)).is_ok());
+        assert_eq!(m.slave_info(6).map(|i| i.guard_ms), Ok(100));
+    }
+
+    #[test]
+    fn bootup_is_reported() {
+        let mut m = NmtMaster::new();
+        m.enable();
+        let mut q = ActionQueue::new();
+        let f = nmt::encode_bootup(9);
+        assert!(!m.on_error_control(&f, &mut q));
+        assert_eq!(
+            q.pop(),
+            Some(Action::Emit(Event::Nmtm(9, ErrCtrlEvent::BootupReceived)))
+        );
+        // A heartbeat with a state is not a boot-up.
+        let hb = CanFrame::new(CanId::std_masked(0x709), &[0x05]);
+        m.on_error_control(&hb, &mut q);
+        assert!(q.is_empty());
+    }
+}
