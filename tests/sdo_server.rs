@@ -314,7 +314,7 @@ impl Rig {
     }
 
     /// Ends a transfer the test started only to look at its first answer
-    /// (CiA 301 7.2.4.3.17: the client's abort is not answered).
+    /// (CiA 301 SDO abort transfer protocol: the client's abort is not answered).
     fn client_abort(&mut self, index: u16, sub: u8) {
         let [lo, hi] = index.to_le_bytes();
         self.sdo_silent(CanFrame::new(
@@ -364,7 +364,7 @@ impl Rig {
             if last {
                 return r;
             }
-            // CiA 301 7.2.4.3.5: 0x20 / 0x30 echoing the toggle bit.
+            // CiA 301 SDO download segment protocol: 0x20 / 0x30 echoing the toggle bit.
             assert_eq!(r, [0x20 | (u8::from(toggle) << 4), 0, 0, 0, 0, 0, 0, 0]);
             toggle = !toggle;
         }
@@ -467,7 +467,7 @@ fn seed_004_examples_byte_for_byte() {
 #[test]
 fn identity_and_device_type() {
     let mut rig = Rig::new(test_od!(), NODE);
-    // CiA 301 7.5.2.1 / 7.5.2.33: 0x1000 and 0x1018 are expedited U32 reads.
+    // CiA 301 objects 1000h and 1018h: expedited U32/U8 reads.
     assert_eq!(
         rig.sdo(expedited_upload(0x1000, 0)),
         [0x43, 0x00, 0x10, 0x00, 0x91, 0x01, 0x00, 0x00]
@@ -487,7 +487,7 @@ fn identity_and_device_type() {
 fn long_visible_string_both_directions() {
     let mut rig = Rig::new(test_od!(), NODE);
     // Upload returns the current length: the default "CANopen", 7 bytes.
-    // CiA 301 7.2.4.3.6: 0x41 with the size.
+    // CiA 301 SDO upload initiate protocol: 0x41 with the size.
     assert_eq!(
         rig.sdo(expedited_upload(0x2000, 0)),
         [0x41, 0x00, 0x20, 0x00, 7, 0, 0, 0]
@@ -534,7 +534,7 @@ fn domain_both_directions() {
 #[test]
 fn every_basic_type_round_trips() {
     let mut rig = Rig::new(test_od!(), NODE);
-    // (sub, wire value, native value): CiA 301 7.1.1 little-endian encoding.
+    // (sub, wire value, native value): CiA 301 data type encoding, little-endian.
     let cases: Vec<(u8, Vec<u8>, Vec<u8>)> = vec![
         (1, vec![0xA5], vec![0xA5]),
         (
@@ -772,7 +772,7 @@ fn refused_segmented_download_changes_nothing() {
         rig.sdo([0x21, 0x06, 0x20, 0x01, 1, 0, 0, 0]),
         [0x60, 0x06, 0x20, 0x01, 0, 0, 0, 0]
     );
-    // t = 0, n = 6, c = 1 -> 0x0D (CiA 301 7.2.4.3.4).
+    // t = 0, n = 6, c = 1 -> 0x0D (CiA 301 SDO download segment protocol).
     assert_eq!(
         rig.sdo([0x0D, 0x11, 0, 0, 0, 0, 0, 0]),
         abort(0x2006, 1, SdoAbort::DeviceState)
@@ -832,7 +832,7 @@ fn upload_larger_than_the_buffer_is_out_of_memory() {
 #[test]
 fn toggle_error_aborts_and_keeps_the_value() {
     let mut rig = Rig::new(test_od!(), NODE);
-    // Download: first segment t = 0, second must be t = 1 (CiA 301 7.2.4.3.4).
+    // Download: first segment t = 0, second must be t = 1 (CiA 301 SDO download segment protocol).
     assert_eq!(rig.sdo([0x21, 0x00, 0x20, 0x00, 10, 0, 0, 0])[0], 0x60);
     assert_eq!(
         rig.sdo([0x00, 1, 2, 3, 4, 5, 6, 7]),
@@ -859,7 +859,7 @@ fn unknown_and_unexpected_commands() {
         rig.sdo([0xE0, 0x00, 0x10, 0x00, 0, 0, 0, 0]),
         abort(0x1000, 0, SdoAbort::UnknownCommand)
     );
-    // Block download initiate (CiA 301 7.2.4.3.9, ccs = 6): not supported.
+    // Block download initiate (CiA 301 SDO block download protocol, ccs = 6): not supported.
     assert_eq!(
         rig.sdo([0xC6, 0x00, 0x20, 0x00, 0x20, 0, 0, 0]),
         abort(0x2000, 0, SdoAbort::UnknownCommand)
@@ -982,7 +982,7 @@ fn sdo_writes_reach_the_module_hooks() {
         .into_iter()
         .filter(|f| f.id == CanId::std_masked(0x702))
         .collect();
-    // CiA 301 7.2.8.3.2.2: 0x700 + node-ID, state 0x7F (pre-operational).
+    // CiA 301 heartbeat protocol: 0x700 + node-ID, state 0x7F (pre-operational).
     assert_eq!(hb.len(), 2);
     assert_eq!(hb[0].payload(), &[0x7F]);
 }
@@ -1039,7 +1039,7 @@ fn explicit_and_changed_cob_ids_from_0x1200() {
         [0x60, 0x00, 0x12, 0x02, 0, 0, 0, 0]
     );
     assert_eq!(rig.sdo_on(0x640, 0x5C1, READ_1000), DEVICE_TYPE_RESPONSE);
-    // Bit 31 (CiA 301 7.5.2.33: not valid) switches the server off.
+    // Bit 31 (CiA 301 object 1200h: not valid) switches the server off.
     rig.set(0x1200, 1, &0x8000_0640u32.to_le_bytes());
     rig.sdo_silent(CanFrame::new(CanId::std_masked(0x640), &READ_1000));
     // Reset communication restores 0x1200 and with it the server.

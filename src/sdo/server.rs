@@ -1,4 +1,4 @@
-//! The default SDO server (CiA 301 7.2.4, object 0x1200): expedited and
+//! The default SDO server (CiA 301 SDO protocols, object 0x1200): expedited and
 //! segmented upload and download. Block transfer is not implemented and is
 //! refused with abort 0x05040001.
 //!
@@ -30,7 +30,7 @@
 //!
 //! # Protocol decisions
 //! * Frames with a data length other than 8, and remote frames, are not SDO
-//!   frames (CiA 301 7.2.4.3 defines every SDO frame with 8 bytes): they are
+//!   frames (CiA 301 defines every SDO frame with 8 data bytes): they are
 //!   ignored without answer and without touching a running transfer.
 //! * While a transfer runs, any request other than its next step (the
 //!   segment with the expected command, or an abort) aborts the transfer
@@ -58,7 +58,7 @@
 //! node-ID. A stored value of exactly 0x600 (sub 1) or 0x580 (sub 2) also
 //! means "base + node-ID": many objdict.h files declare the base because
 //! the node-ID is not known at compile time. Bit 31 set in either sub
-//! disables the server (CiA 301 7.5.2.33: both COB-IDs must be valid); so
+//! disables the server (CiA 301 object 1200h: both COB-IDs must be valid); so
 //! does an 11-bit COB-ID with bits 28..11 set.
 
 use crate::config::{SDOS_BUFFER_SIZE, SDOS_DEFAULT_TIMEOUT};
@@ -78,40 +78,51 @@ const COB_ID_INVALID: u32 = 0x8000_0000;
 /// COB-ID bit 29: 29-bit identifier.
 const COB_ID_EXTENDED: u32 = 0x2000_0000;
 
+/// A segmented upload: `len` bytes of the buffer, `sent` of them sent.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Upload {
+    mux: Multiplexer,
+    len: usize,
+    sent: usize,
+    /// Toggle bit the next request must carry.
+    toggle: bool,
+    last_rx: Ticks,
+}
+
+/// A segmented download: `received` bytes collected in the buffer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Download {
+    mux: Multiplexer,
+    /// Size stated by the client at initiate.
+    size: Option<usize>,
+    received: usize,
+    /// Toggle bit the next segment must carry.
+    toggle: bool,
+    last_rx: Ticks,
+}
+
 /// The transfer in progress.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Transfer {
     Idle,
-    /// Segmented upload of `len` bytes from the buffer, `sent` sent so far.
-    Upload {
-        mux: Multiplexer,
-        len: usize,
-        sent: usize,
-        toggle: bool,
-        last_rx: Ticks,
-    },
-    /// Segmented download, `received` bytes in the buffer so far.
-    Download {
-        mux: Multiplexer,
-        size: Option<usize>,
-        received: usize,
-        toggle: bool,
-        last_rx: Ticks,
-    },
+    Upload(Upload),
+    Download(Download),
 }
 
 impl Transfer {
     fn mux(&self) -> Option<Multiplexer> {
-        match *self {
+        match self {
             Transfer::Idle => None,
-            Transfer::Upload { mux, .. } | Transfer::Download { mux, .. } => Some(mux),
+            Transfer::Upload(u) => Some(u.mux),
+            Transfer::Download(d) => Some(d.mux),
         }
     }
 
     fn last_rx(&self) -> Option<Ticks> {
-        match *self {
+        match self {
             Transfer::Idle => None,
-            Transfer::Upload { last_rx, .. } | Transfer::Download { last_rx, .. } => Some(last_rx),
+            Transfer::Upload(u) => Some(u.last_rx),
+            Transfer::Download(d) => Some(d.last_rx),
         }
     }
 }
@@ -280,11 +291,15 @@ impl SdoServer {
             (Transfer::Idle, ClientFrame::InitiateDownload { mux, payload }) => {
                 Some(self.initiate_download(od, hooks, mux, payload, now))
             }
-            (Transfer::Upload { .. }, ClientFrame::UploadSegment { toggle }) => {
-                Some(self.upload_segment(toggle, now))
+            (Transfer::Upload(up), ClientFrame::UploadSegment { toggle }) => {
+                Some(self.upload_segment(Upload { last_rx: now, ..up }, toggle))
             }
-            (Transfer::Download { .. }, ClientFrame::DownloadSegment { toggle, data, last }) => {
-                Some(self.download_segment(od, hooks, toggle, &data, last, now))
+            (Transfer::Download(down), ClientFrame::DownloadSegment { toggle, data, last }) => {
+                let down = Download {
+                    last_rx: now,
+                    ..down
+                };
+                Some(self.download_segment(od, hooks, down, toggle, &data, last))
             }
             (running, _) => {
                 let mux = running.mux().unwrap_or_default();
@@ -323,13 +338,13 @@ impl SdoServer {
         }
         // Longer values, and empty ones (an expedited transfer cannot say
         // "0 bytes"), go segmented.
-        self.transfer = Transfer::Upload {
+        self.transfer = Transfer::Upload(Upload {
             mux,
             len,
             sent: 0,
             toggle: false,
             last_rx: now,
-        };
+        });
         ServerFrame::InitiateUploadResponse {
             mux,
             payload: Initiate::Segmented {
@@ -348,36 +363,25 @@ impl SdoServer {
                 .is_ok_and(|n| n > self.buf.len())
     }
 
-    fn upload_segment(&mut self, toggle: bool, now: Ticks) -> ServerFrame {
-        let Transfer::Upload {
-            mux,
-            len,
-            sent,
-            toggle: expected,
-            ..
-        } = self.transfer
-        else {
-            return self.abort(Multiplexer::default(), SdoAbort::General.code());
-        };
-        if toggle != expected {
-            return self.abort(mux, SdoAbort::ToggleBit.code());
+    /// `up` is the transfer with its timer restarted.
+    fn upload_segment(&mut self, up: Upload, toggle: bool) -> ServerFrame {
+        if toggle != up.toggle {
+            return self.abort(up.mux, SdoAbort::ToggleBit.code());
         }
-        let end = len.min(sent.saturating_add(SEGMENT_MAX));
-        let Some(data) = self.buf.get(sent..end).and_then(SegmentData::new) else {
+        let end = up.len.min(up.sent.saturating_add(SEGMENT_MAX));
+        let Some(data) = self.buf.get(up.sent..end).and_then(SegmentData::new) else {
             // Unreachable: len never exceeds the buffer.
-            return self.abort(mux, SdoAbort::General.code());
+            return self.abort(up.mux, SdoAbort::General.code());
         };
-        let last = end == len;
+        let last = end == up.len;
         self.transfer = if last {
             Transfer::Idle
         } else {
-            Transfer::Upload {
-                mux,
-                len,
+            Transfer::Upload(Upload {
                 sent: end,
                 toggle: !toggle,
-                last_rx: now,
-            }
+                ..up
+            })
         };
         ServerFrame::UploadSegmentResponse { toggle, data, last }
     }
@@ -411,56 +415,46 @@ impl SdoServer {
                 if size.is_some_and(|s| s > self.buf.len()) {
                     return self.abort(mux, SdoAbort::LengthTooHigh.code());
                 }
-                self.transfer = Transfer::Download {
+                self.transfer = Transfer::Download(Download {
                     mux,
                     size,
                     received: 0,
                     toggle: false,
                     last_rx: now,
-                };
+                });
                 ServerFrame::InitiateDownloadResponse { mux }
             }
         }
     }
 
+    /// `down` is the transfer with its timer restarted.
     fn download_segment(
         &mut self,
         od: &ObjectDictionary,
         hooks: &mut impl WriteHooks,
+        down: Download,
         toggle: bool,
         data: &SegmentData,
         last: bool,
-        now: Ticks,
     ) -> ServerFrame {
-        let Transfer::Download {
-            mux,
-            size,
-            received,
-            toggle: expected,
-            ..
-        } = self.transfer
-        else {
-            return self.abort(Multiplexer::default(), SdoAbort::General.code());
-        };
-        if toggle != expected {
+        let mux = down.mux;
+        if toggle != down.toggle {
             return self.abort(mux, SdoAbort::ToggleBit.code());
         }
-        let end = received.saturating_add(data.len());
-        let Some(dst) = self.buf.get_mut(received..end) else {
+        let end = down.received.saturating_add(data.len());
+        let Some(dst) = self.buf.get_mut(down.received..end) else {
             return self.abort(mux, SdoAbort::LengthTooHigh.code());
         };
         dst.copy_from_slice(data.as_slice());
-        if size.is_some_and(|s| end > s || (last && end != s)) {
+        if down.size.is_some_and(|s| end > s || (last && end != s)) {
             return self.abort(mux, SdoAbort::LengthMismatch.code());
         }
         if !last {
-            self.transfer = Transfer::Download {
-                mux,
-                size,
+            self.transfer = Transfer::Download(Download {
                 received: end,
                 toggle: !toggle,
-                last_rx: now,
-            };
+                ..down
+            });
             return ServerFrame::DownloadSegmentResponse { toggle };
         }
         self.transfer = Transfer::Idle;

@@ -1,4 +1,4 @@
-//! SDO frame layouts (CiA 301 7.2.4.3): expedited and segmented transfer,
+//! SDO frame layouts (CiA 301 SDO protocols): expedited and segmented transfer,
 //! abort. Pure encoding and decoding in both directions, so that the SDO
 //! server and an SDO client share one implementation of the byte layout.
 //!
@@ -21,7 +21,7 @@ use crate::port::{CanFrame, CanId};
 pub const REQUEST_BASE: u16 = 0x600;
 /// Base COB-ID of the default SDO server's responses (server to client).
 pub const RESPONSE_BASE: u16 = 0x580;
-/// Every SDO frame has exactly this many data bytes (CiA 301 7.2.4.3).
+/// Every SDO frame has exactly this many data bytes (CiA 301 SDO protocols).
 pub const FRAME_LEN: usize = 8;
 /// Most data bytes an expedited transfer carries.
 pub const EXPEDITED_MAX: usize = 4;
@@ -261,7 +261,7 @@ pub enum ClientFrame {
     Abort {
         /// Object of the aborted transfer.
         mux: Multiplexer,
-        /// Abort code (CiA 301 table 22, [`crate::error::SdoAbort`]).
+        /// Abort code (CiA 301 abort codes, [`crate::error::SdoAbort`]).
         code: u32,
     },
 }
@@ -593,14 +593,14 @@ mod tests {
             0x60
         );
         assert_eq!(ServerFrame::Abort { mux, code: 0 }.encode()[0], 0x80);
-        // 3 bytes (CiA 301 7.2.4.3.3: n = 1): 0x27 / 0x47.
+        // 3 bytes (CiA 301 SDO download initiate protocol: n = 1): 0x27 / 0x47.
         assert_eq!(down(&[1, 2, 3]), 0x27);
         assert_eq!(up(&[1, 2, 3]), 0x47);
     }
 
     #[test]
     fn expedited_without_size_gives_all_four_bytes() {
-        // CiA 301 7.2.4.3.3: e = 1, s = 0 -> 0x22; the data size is unspecified.
+        // CiA 301 SDO download initiate protocol: e = 1, s = 0 -> 0x22; the data size is unspecified.
         let f = ClientFrame::decode(&[0x22, 0x00, 0x20, 0x00, 1, 2, 3, 4]).unwrap();
         assert_eq!(
             f,
@@ -617,7 +617,7 @@ mod tests {
 
     #[test]
     fn segmented_initiate_with_and_without_size() {
-        // CiA 301 7.2.4.3.3 / 7.2.4.3.6: e = 0, s = 1 -> size in bytes 4..7.
+        // CiA 301 SDO download / upload initiate protocols: e = 0, s = 1 -> size in bytes 4..7.
         let sized = [0x21, 0x01, 0x20, 0x00, 0x2C, 0x01, 0x00, 0x00];
         let f = ClientFrame::decode(&sized).unwrap();
         assert_eq!(
@@ -649,7 +649,7 @@ mod tests {
 
     #[test]
     fn download_segments_carry_toggle_size_and_last_flag() {
-        // CiA 301 7.2.4.3.4: ccs = 0, t = bit 4, n = bits 3..1, c = bit 0.
+        // CiA 301 SDO download segment protocol: ccs = 0, t = bit 4, n = bits 3..1, c = bit 0.
         let full = SegmentData::new(&[1, 2, 3, 4, 5, 6, 7]).unwrap();
         let f = ClientFrame::DownloadSegment {
             toggle: false,
@@ -679,7 +679,7 @@ mod tests {
 
     #[test]
     fn upload_segments() {
-        // CiA 301 7.2.4.3.7: request ccs = 3 -> 0x60 / 0x70; response scs = 0.
+        // CiA 301 SDO upload segment protocol: request ccs = 3 -> 0x60 / 0x70; response scs = 0.
         assert_eq!(
             ClientFrame::decode(&[0x70, 0, 0, 0, 0, 0, 0, 0]).unwrap(),
             ClientFrame::UploadSegment { toggle: true }
@@ -710,7 +710,7 @@ mod tests {
 
     #[test]
     fn abort_frame_layout() {
-        // CiA 301 7.2.4.3.17: 0x80, multiplexer, abort code little-endian.
+        // CiA 301 SDO abort transfer protocol: 0x80, multiplexer, abort code little-endian.
         let f = ServerFrame::Abort {
             mux: Multiplexer::new(0x1018, 5),
             code: 0x0609_0011,
@@ -729,7 +729,7 @@ mod tests {
 
     #[test]
     fn block_transfer_and_reserved_specifier_are_unsupported() {
-        // CiA 301 7.2.4.3.9 ff.: block upload ccs = 5 (0xA0), block download ccs = 6 (0xC0).
+        // CiA 301 SDO block protocols: block upload ccs = 5 (0xA0), block download ccs = 6 (0xC0).
         for (b0, cs) in [(0xA0u8, 5u8), (0xC6, 6), (0xE0, 7)] {
             let r = ClientFrame::decode(&[b0, 0x00, 0x10, 0x02, 0, 0, 0, 0]);
             assert_eq!(

@@ -277,7 +277,7 @@ fn seed_004_example_1_write_reaches_the_variable() {
 
 #[test]
 fn expedited_upload_of_each_width() {
-    // CiA 301 7.2.4.3.6: n = 4 - size; 0x43 for 4 bytes.
+    // CiA 301 SDO upload initiate protocol: n = 4 - size; 0x43 for 4 bytes.
     let mut rig = Rig::new(test_od!());
     assert_eq!(
         rig.req([0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0]),
@@ -296,7 +296,7 @@ fn expedited_upload_of_each_width() {
 
 #[test]
 fn expedited_download_without_size_uses_the_type_width() {
-    // CiA 301 7.2.4.3.3: 0x22 = expedited, size not indicated.
+    // CiA 301 SDO download initiate protocol: 0x22 = expedited, size not indicated.
     let mut rig = Rig::new(test_od!());
     let r = rig.req([0x22, 0x01, 0x20, 0x00, 0xF4, 0x01, 0xEE, 0xEE]);
     assert_eq!(r, Some([0x60, 0x01, 0x20, 0x00, 0, 0, 0, 0]));
@@ -369,7 +369,7 @@ fn module_hook_veto_is_the_abort_code_and_nothing_is_stored() {
 
 #[test]
 fn segmented_upload_frames_follow_cia301() {
-    // CiA 301 7.2.4.3.6 / 7.2.4.3.7: 0x41 + size, then 0x00/0x10 segments,
+    // CiA 301 SDO upload initiate / upload segment protocols: 0x41 + size, then 0x00/0x10 segments,
     // the last with c = 1 and n = unused bytes.
     let mut rig = Rig::new(test_od!());
     rig.set(0x2004, 0, b"ABCDEFGHIJ");
@@ -407,7 +407,7 @@ fn upload_is_a_snapshot_taken_at_initiate() {
 #[test]
 fn empty_string_uploads_as_zero_length_segmented_transfer() {
     // Expedited transfer cannot state 0 bytes: 0x41 with size 0, then one
-    // segment with n = 7, c = 1 (CiA 301 7.2.4.3.7).
+    // segment with n = 7, c = 1 (CiA 301 SDO upload segment protocol).
     let mut rig = Rig::new(test_od!());
     assert_eq!(
         rig.req([0x40, 0x04, 0x20, 0x00, 0, 0, 0, 0]),
@@ -542,7 +542,7 @@ fn toggle_errors_abort() {
     let mut rig = Rig::new(test_od!());
     rig.set(0x2004, 0, b"0123456789ABCDEF");
     rig.req([0x40, 0x04, 0x20, 0x00, 0, 0, 0, 0]).unwrap();
-    // First upload request must have t = 0 (CiA 301 7.2.4.3.7).
+    // First upload request must have t = 0 (CiA 301 SDO upload segment protocol).
     assert_eq!(
         rig.req([0x70, 0, 0, 0, 0, 0, 0, 0]),
         Some(abort_bytes(0x2004, 0, SdoAbort::ToggleBit))
@@ -598,7 +598,7 @@ fn segment_without_transfer_and_block_requests_are_unknown_commands() {
         rig.req([0x00, 1, 2, 3, 4, 5, 6, 7]),
         Some(abort_bytes(0, 0, SdoAbort::UnknownCommand))
     );
-    // Block upload initiate (CiA 301 7.2.4.3.10, ccs = 5): not supported.
+    // Block upload initiate (CiA 301 SDO block upload protocol, ccs = 5): not supported.
     assert_eq!(
         rig.req([0xA4, 0x18, 0x10, 0x01, 0x7F, 0, 0, 0]),
         Some(abort_bytes(0x1018, 1, SdoAbort::UnknownCommand))
@@ -618,7 +618,7 @@ fn client_abort_ends_the_transfer_silently() {
     let mut rig = Rig::new(test_od!());
     rig.req([0x21, 0x04, 0x20, 0x00, 14, 0, 0, 0]).unwrap();
     rig.req([0x00, 1, 2, 3, 4, 5, 6, 7]).unwrap();
-    // CiA 301 7.2.4.3.17: 0x80, multiplexer, abort code.
+    // CiA 301 SDO abort transfer protocol: 0x80, multiplexer, abort code.
     assert_eq!(rig.req([0x80, 0x04, 0x20, 0x00, 0, 0, 0, 0x08]), None);
     assert!(!rig.server.is_busy());
     assert_eq!(rig.read(0x2004, 0), Vec::<u8>::new());
