@@ -31,7 +31,7 @@ use crate::heartbeat::HeartbeatProducer;
 use crate::nmtm::NmtMaster;
 use crate::od::{ByteOrder, Object, ObjectDictionary, Staged, WriteHooks};
 use crate::port::{CanId, CanPort, Priority, RxFrame, Ticks};
-use crate::sdo::SdoServer;
+use crate::sdo::{SdoClient, SdoServer};
 use crate::srdo::Srdo;
 use crate::wire::emcy::Emergency;
 use crate::wire::nmt::{self, NmtCs};
@@ -85,6 +85,8 @@ enum Phase {
     HbcTimers,
     /// NMT master guarding (resumable).
     NmtmTimers,
+    /// SDO client timeouts (resumable).
+    SdocTimers,
     /// SDO timeout, heartbeat producer, delayed emergencies.
     Timers,
     Idle,
@@ -106,6 +108,7 @@ pub struct Stack {
     nmtm: NmtMaster,
     emcy: EmcyProducer,
     sdo: SdoServer,
+    sdoc: SdoClient,
     srdo: Srdo,
 }
 
@@ -178,6 +181,7 @@ impl Stack {
             nmtm: NmtMaster::new(),
             emcy: EmcyProducer::new(),
             sdo: SdoServer::new(),
+            sdoc: SdoClient::new(),
             srdo: Srdo::new(),
         };
         s.srdo.init(&s.od)?;
@@ -270,6 +274,48 @@ impl Stack {
         Ok(())
     }
 
+    /// The SDO client.
+    pub fn sdoc(&self) -> &SdoClient {
+        &self.sdoc
+    }
+
+    /// Defines an SDO client channel and subscribes its response COB-ID.
+    pub fn define_sdo_client(
+        &mut self,
+        port: &mut impl CanPort,
+        index: u16,
+        p: crate::sdo::client::ClientParam,
+    ) -> CopResult {
+        self.sdoc.define(index, p)?;
+        self.subscribe(port);
+        Ok(())
+    }
+
+    /// Starts an SDO client transfer (`CcmSdocStartTransfer`).
+    #[allow(clippy::too_many_arguments)]
+    pub fn sdo_client_start(
+        &mut self,
+        port: &mut impl CanPort,
+        now: Ticks,
+        index: u16,
+        dir: crate::sdo::client::Direction,
+        mux: crate::wire::sdo::Multiplexer,
+        buf: &'static [core::sync::atomic::AtomicU8],
+        len: usize,
+        timeout_ticks: u32,
+    ) -> CopResult {
+        if !self.connected || self.state == NmtState::Stopped {
+            return Err(CopKernel::NmtStateError);
+        }
+        self.sdoc
+            .start(port, now, index, dir, mux, buf, len, timeout_ticks)
+    }
+
+    /// Aborts an SDO client transfer (`CcmSdocAbort`).
+    pub fn sdo_client_abort(&mut self, port: &mut impl CanPort, index: u16, code: u32) -> CopResult {
+        self.sdoc.abort(port, index, code, &mut self.queue)
+    }
+
     /// The heartbeat producer.
     pub fn heartbeat(&self) -> &HeartbeatProducer {
         &self.hb
@@ -323,6 +369,11 @@ impl Stack {
                 }
                 Phase::NmtmTimers => {
                     if !self.connected || self.nmtm.poll(port, now, &mut self.queue) {
+                        self.phase = Phase::SdocTimers;
+                    }
+                }
+                Phase::SdocTimers => {
+                    if self.sdoc.poll(port, now, &mut self.queue) {
                         self.phase = Phase::Timers;
                     }
                 }
@@ -405,6 +456,9 @@ impl Stack {
         {
             return;
         }
+        if self.sdoc.on_frame(port, f, now, &mut self.queue) {
+            return;
+        }
         if Some(f.id) == self.sdo.rx_id() {
             let mut hooks = Hooks {
                 state: self.state,
@@ -423,6 +477,7 @@ impl Stack {
             }
             if changed {
                 self.sdo.reconfigure(&self.od, self.node_id);
+                self.sdoc.reconfigure(&self.od);
                 self.subscribe(port);
             }
         }
@@ -498,6 +553,7 @@ impl Stack {
                 self.hbc.reconfigure(&self.od);
                 self.emcy.reconfigure(&self.od, self.node_id);
                 self.sdo.reconfigure(&self.od, self.node_id);
+                self.sdoc.reconfigure(&self.od);
                 self.subscribe(port);
                 self.srdo.reconfigure(&self.od, port);
                 if self.connected && self.state == NmtState::Initialisation {
@@ -520,6 +576,9 @@ impl Stack {
         for node in 1..=127u8 {
             let _ = port.subscribe(nmt::error_control_id(node), Priority::Low);
         }
+        for id in self.sdoc.rx_ids() {
+            let _ = port.subscribe(id, Priority::Low);
+        }
         let sdo = self.sdo.rx_id();
         if sdo != self.sdo_subscribed {
             if let Some(old) = self.sdo_subscribed {
@@ -539,6 +598,7 @@ impl Stack {
             NmtState::Initialisation => {
                 self.hb.stop();
                 self.sdo.cancel();
+                self.sdoc.cancel_all();
             }
             NmtState::Stopped => self.sdo.cancel(),
             _ => {}

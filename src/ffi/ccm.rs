@@ -394,7 +394,6 @@ fn define_var(od: &ObjectDictionary, v: &tVarParam) -> CopResult {
 ///
 /// # Safety
 /// `p` must be valid for `len` bytes for the rest of the program.
-#[allow(dead_code)]
 pub(crate) unsafe fn static_bytes(p: *mut c_void, len: usize) -> &'static [AtomicU8] {
     // SAFETY: guaranteed by the caller; AtomicU8 has the layout of u8.
     unsafe { core::slice::from_raw_parts(p as *const AtomicU8, len) }

@@ -14,7 +14,7 @@ use core::cell::{Cell, UnsafeCell};
 use super::driver::{CdrvPort, TgtClock};
 use super::types::{
     tAppHbcEventCallback, tAppNmtmEventCallback, tCcmErrorCallback, tCcmNmtEventCallback,
-    tSrdoAppCallbacks,
+    tSdocCbFinishParam, tSdocCbFinished, tSrdoAppCallbacks,
 };
 use crate::ccm::Stack;
 use crate::error::CopKernel;
@@ -35,6 +35,8 @@ pub struct Callbacks {
     pub nmtm: tAppNmtmEventCallback,
     /// `CcmInitHbcEx`.
     pub hbc: tAppHbcEventCallback,
+    /// Finish callbacks of the SDO client channels (per transfer).
+    pub sdoc: [tSdocCbFinished; crate::sdo::client::CAPACITY],
 }
 
 /// Everything the C API keeps between calls.
@@ -185,7 +187,24 @@ fn dispatch(ev: Event, cbs: Callbacks) {
                 unsafe { cb(node, e as u32) };
             }
         }
-        Event::SdocFinished { .. } | Event::Emcc(..) => super::master::dispatch(ev),
+        Event::SdocFinished {
+            client,
+            state,
+            abort,
+        } => {
+            let slot = usize::from(client.wrapping_sub(crate::sdo::client::CLIENT_BASE_INDEX));
+            if let Some(Some(cb)) = cbs.sdoc.get(slot).copied() {
+                let mut p = tSdocCbFinishParam {
+                    m_wClientIndex: client,
+                    m_SdocState: u32::from(state),
+                    m_dwAbortCode: abort,
+                };
+                // SAFETY: the finish callback given with CcmSdocStartTransfer;
+                // `p` lives for the call.
+                unsafe { cb(&mut p) };
+            }
+        }
+        Event::Emcc(..) => super::master::dispatch(ev),
     }
 }
 

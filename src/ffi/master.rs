@@ -19,8 +19,8 @@ fn code(r: Result<CopResult, CopKernel>) -> tCopKernel {
     }
 }
 
-/// Master-side events without a callback of their own yet (SDO client,
-/// emergency consumer) are dropped here.
+/// Master-side events without a callback of their own yet (emergency
+/// consumer) are dropped here.
 pub fn dispatch(ev: Event) {
     let _ = ev;
 }
@@ -256,5 +256,175 @@ pub unsafe extern "C" fn CcmHbcGetNodeState(
         }
         Ok(None) => CopKernel::HbcEntryNotExist.code(),
         Err(e) => e.code(),
+    }
+}
+
+/// `CcmSdocDefineClientTab`: defines SDO client channels. Per entry the
+/// valid flags select the fields taken (kSdocValidFlagRxCanId 0x01,
+/// TxCanId 0x02, ServerNodeId 0x04, TimeOut 0x08); a node-ID without
+/// COB-IDs gives the predefined connection set (0x600 / 0x580 + node-ID).
+/// kCopInvalidParam (NULL), kCopSdocClientNotExist (index outside
+/// 0x1280.. + `SDO_MAX_CLIENT_IN_OBD`), kCopSdocInvalidParam, kCopSdocBusy.
+///
+/// # Safety
+/// `pClientTab_p` must be valid for `bNumOfClients_p` entries.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmSdocDefineClientTab(
+    pClientTab_p: *const tSdocParam,
+    bNumOfClients_p: BYTE,
+) -> tCopKernel {
+    let n = usize::from(bNumOfClients_p);
+    if pClientTab_p.is_null() && n > 0 {
+        return CopKernel::InvalidParam.code();
+    }
+    let tab: &[tSdocParam] = if n == 0 {
+        &[]
+    } else {
+        // SAFETY: the caller guarantees n entries.
+        unsafe { core::slice::from_raw_parts(pClientTab_p, n) }
+    };
+    code(global::with(|i| {
+        for p in tab {
+            let mut cp = i.stack.sdoc().param(p.m_wClientIndex).unwrap_or_default();
+            if cp == crate::sdo::client::ClientParam::default() {
+                cp.tx_cob = 0x8000_0000;
+                cp.rx_cob = 0x8000_0000;
+            }
+            if p.m_bValidFlags & 0x04 != 0 {
+                cp.server_node = p.m_bServerNodeId;
+                if p.m_bValidFlags & 0x03 == 0 && (1..=127).contains(&p.m_bServerNodeId) {
+                    cp.tx_cob = 0x600 + u32::from(p.m_bServerNodeId);
+                    cp.rx_cob = 0x580 + u32::from(p.m_bServerNodeId);
+                }
+            }
+            if p.m_bValidFlags & 0x01 != 0 {
+                cp.rx_cob = p.m_dwRxCanId;
+            }
+            if p.m_bValidFlags & 0x02 != 0 {
+                cp.tx_cob = p.m_dwTxCanId;
+            }
+            if p.m_bValidFlags & 0x08 != 0 {
+                cp.timeout_ticks = p.m_TimeOut;
+            }
+            let Instance { stack, port, .. } = i;
+            stack.define_sdo_client(port, p.m_wClientIndex, cp)?;
+        }
+        Ok(())
+    }))
+}
+
+/// `CcmSdocStartTransfer`: starts an upload (kSdocTypeSegUp) or download
+/// (kSdocTypeSegDown; expedited when ≤ 4 bytes) on a client channel. The
+/// buffer `m_pData` is used directly until the transfer ends and an upload
+/// never writes more than `m_DataLen` bytes. kCopInvalidParam (NULL),
+/// kCopSdocInvalidParam (block transfer types, bad sizes),
+/// kCopSdocClientNotExist, kCopSdocBusy, kCopNmtStateError (not connected
+/// or STOPPED), or the driver's code.
+///
+/// # Safety
+/// `pSdoTransParam_p` must be NULL or valid; `m_pData` must stay valid for
+/// `m_DataLen` bytes until the transfer has ended.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmSdocStartTransfer(
+    pSdoTransParam_p: *const tSdocTransferParam,
+) -> tCopKernel {
+    if pSdoTransParam_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    // SAFETY: checked for NULL.
+    let p = unsafe { *pSdoTransParam_p };
+    let dir = match p.m_SdocType {
+        0 => crate::sdo::client::Direction::Download,
+        1 => crate::sdo::client::Direction::Upload,
+        _ => return CopKernel::SdocInvalidParam.code(),
+    };
+    let len = usize::from(p.m_DataLen);
+    if p.m_pData.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    // SAFETY: the caller keeps the buffer valid until the transfer ends;
+    // the stack drops this view when it does (finish, abort, reset).
+    let buf = unsafe { super::ccm::static_bytes(p.m_pData, len) };
+    let now = TgtClock.now();
+    let mux = crate::wire::sdo::Multiplexer::new(p.m_wObjIndex, p.m_bObjSubIndex);
+    code(global::with(|i| {
+        let Instance {
+            stack,
+            port,
+            callbacks,
+        } = i;
+        stack.sdo_client_start(port, now, p.m_wClientIndex, dir, mux, buf, len, p.m_TimeOut)?;
+        let slot = usize::from(
+            p.m_wClientIndex
+                .wrapping_sub(crate::sdo::client::CLIENT_BASE_INDEX),
+        );
+        if let Some(c) = callbacks.sdoc.get_mut(slot) {
+            *c = p.m_pfnCbFinished;
+        }
+        Ok(())
+    }))
+}
+
+/// `CcmSdocAbort`: aborts a running transfer and tells the server.
+/// kCopSdocClientNotExist, kCopSdocTransferError (no transfer running).
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmSdocAbort(wClientIndex_p: WORD, dwAbortCode_p: DWORD) -> tCopKernel {
+    let r = global::with(|i| {
+        let Instance { stack, port, .. } = i;
+        stack.sdo_client_abort(port, wClientIndex_p, dwAbortCode_p)
+    });
+    global::pump(|i, now| i.stack.drain(&mut i.port, now));
+    code(r)
+}
+
+/// `CcmSdocGetState`: state of a client channel and the abort code of its
+/// last transfer (0 unless aborted). kCopInvalidParam (NULL),
+/// kCopSdocClientNotExist.
+///
+/// # Safety
+/// The pointers must be NULL or valid for writing.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmSdocGetState(
+    wClientIndex_p: WORD,
+    pSdocState_p: *mut tSdocState,
+    pdwAbortCode_p: *mut DWORD,
+) -> tCopKernel {
+    if pSdocState_p.is_null() || pdwAbortCode_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    match global::with(|i| i.stack.sdoc().state(wClientIndex_p)) {
+        Ok(Ok((st, abort))) => {
+            // SAFETY: both checked for NULL.
+            unsafe {
+                *pSdocState_p = st as u32;
+                *pdwAbortCode_p = abort;
+            }
+            0
+        }
+        Ok(Err(e)) | Err(e) => e.code(),
+    }
+}
+
+/// `SdocGetTransmittedBytes`: bytes moved by the channel's last finished
+/// transfer (the length of an upload). kCopInvalidParam (NULL),
+/// kCopSdocClientNotExist.
+///
+/// # Safety
+/// `pdwBytes_p` must be NULL or valid for writing.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn SdocGetTransmittedBytes(
+    wClientIndex_p: WORD,
+    pdwBytes_p: *mut DWORD,
+) -> tCopKernel {
+    if pdwBytes_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    match global::with(|i| i.stack.sdoc().transferred(wClientIndex_p)) {
+        Ok(Ok(n)) => {
+            // SAFETY: checked for NULL.
+            unsafe { *pdwBytes_p = n };
+            0
+        }
+        Ok(Err(e)) | Err(e) => e.code(),
     }
 }

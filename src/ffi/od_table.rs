@@ -223,11 +223,13 @@ impl ObdSubEntry {
     }
 
     /// A visible string in RAM; `buffer.len()` is the capacity plus one.
+    /// The default is a C string (`c"..."`): the table format stores it
+    /// NUL-terminated, as objdef.h does.
     pub const fn ram_string(
         sub: u8,
         access: Access,
         buffer: &'static [AtomicU8],
-        default: &'static [u8],
+        default: &'static core::ffi::CStr,
     ) -> ObdSubEntry {
         ObdSubEntry {
             m_bSubIndex: sub,

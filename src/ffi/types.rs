@@ -184,6 +184,66 @@ pub struct tNmtmSlaveInfo {
     pub m_bLifeguardFactor: BYTE,
 }
 
+/// `tSdocState`.
+pub type tSdocState = tFastByte;
+/// `tSdocType`.
+pub type tSdocType = tFastByte;
+
+/// `tSdocParam` (`CcmSdocDefineClientTab`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct tSdocParam {
+    /// Which fields are valid (kSdocValidFlag*).
+    pub m_bValidFlags: BYTE,
+    /// Timeout in ticks (0 = default).
+    pub m_TimeOut: tTime,
+    /// Client index (0x1280 + n).
+    pub m_wClientIndex: WORD,
+    /// COB-ID server -> client.
+    pub m_dwRxCanId: DWORD,
+    /// COB-ID client -> server.
+    pub m_dwTxCanId: DWORD,
+    /// Node-ID of the server.
+    pub m_bServerNodeId: BYTE,
+}
+
+/// `tSdocCbFinishParam`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct tSdocCbFinishParam {
+    /// Client index.
+    pub m_wClientIndex: WORD,
+    /// Final state.
+    pub m_SdocState: tSdocState,
+    /// Abort code (0 when finished).
+    pub m_dwAbortCode: DWORD,
+}
+
+/// `tSdocCbFinished`.
+pub type tSdocCbFinished = Option<unsafe extern "C" fn(pParamList_p: *mut tSdocCbFinishParam)>;
+
+/// `tSdocTransferParam` (`CcmSdocStartTransfer`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct tSdocTransferParam {
+    /// Client index.
+    pub m_wClientIndex: WORD,
+    /// Remote object index.
+    pub m_wObjIndex: WORD,
+    /// Remote subindex.
+    pub m_bObjSubIndex: BYTE,
+    /// Data to send / buffer to fill.
+    pub m_pData: *mut c_void,
+    /// Bytes to send / buffer size.
+    pub m_DataLen: tObdSize,
+    /// Timeout in ticks (0 = the client's).
+    pub m_TimeOut: tTime,
+    /// kSdocTypeSegDown / kSdocTypeSegUp (block types are refused).
+    pub m_SdocType: tSdocType,
+    /// Called when the transfer ends (may be NULL: poll CcmSdocGetState).
+    pub m_pfnCbFinished: tSdocCbFinished,
+}
+
 /// `tCcmInitParam` (single instance, `COP_USE_CDRV_FUNCTION_POINTER` off).
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
@@ -354,6 +414,8 @@ pub struct tEmcParam {
 // 64-bit host (tests) differ only where pointers appear.
 static_assertions::const_assert_eq!(core::mem::size_of::<tSrdoCommuParam>(), 4);
 static_assertions::const_assert_eq!(core::mem::size_of::<tHbcProdParam>(), 4);
+static_assertions::const_assert_eq!(core::mem::size_of::<tSdocParam>(), 24);
+static_assertions::const_assert_eq!(core::mem::size_of::<tSdocCbFinishParam>(), 12);
 static_assertions::const_assert_eq!(core::mem::size_of::<tNmtmSlaveParam>(), 4);
 static_assertions::const_assert_eq!(core::mem::size_of::<tNmtmSlaveInfo>(), 6);
 static_assertions::const_assert_eq!(core::mem::size_of::<tEmcParam>(), 10);

@@ -1,3 +1,5 @@
-//! SDO server (and, later, client): CiA 301 7.2.4.
+//! SDO server and client: CiA 301 SDO protocols.
+pub mod client;
 pub mod server;
+pub use client::SdoClient;
 pub use server::SdoServer;

@@ -73,7 +73,7 @@ macro_rules! test_od {
             &WO_VAR,
             None,
         )];
-        static S2004: [ObdSubEntry; 1] = [ObdSubEntry::ram_string(0, Access::RW, &STR_VAR, b"\0")];
+        static S2004: [ObdSubEntry; 1] = [ObdSubEntry::ram_string(0, Access::RW, &STR_VAR, c"")];
         static S2005: [ObdSubEntry; 1] = [ObdSubEntry::ram(
             0,
             DataType::UInt64,

@@ -1,0 +1,573 @@
+//! SDO client (CiA 301 SDO protocols, client side): expedited and segmented
+//! upload and download to remote SDO servers, one transfer per client
+//! channel at a time, several channels (servers) in parallel.
+//!
+//! The caller's buffer is used directly, without a copy: a download reads
+//! from it, an upload writes into it and never past its length. A reply
+//! that does not fit the request aborts the transfer with the CiA 301 code
+//! (wrong toggle 0x05030000, wrong command 0x05040001, wrong object
+//! 0x08000000 general error), and every abort received from the server is
+//! reported with its code. The transfer state and the abort code are what
+//! `CcmSdocGetState` reports; the end of a transfer is also an
+//! [`Event::SdocFinished`].
+
+use core::sync::atomic::{AtomicU8, Ordering};
+
+use crate::error::{CopKernel, CopResult, SdoAbort};
+use crate::event::{ActionQueue, Event};
+use crate::od::ObjectDictionary;
+use crate::port::{CanFrame, CanId, CanPort, Priority, Ticks};
+use crate::wire::sdo::{
+    ClientFrame, EXPEDITED_MAX, Initiate, Multiplexer, SEGMENT_MAX, SegmentData, ServerFrame,
+};
+
+/// First client parameter object.
+pub const CLIENT_BASE_INDEX: u16 = 0x1280;
+/// Capacity: `SDO_MAX_CLIENT_IN_OBD`.
+pub const CAPACITY: usize = crate::config::SDO_MAX_CLIENT_IN_OBD;
+/// Default transfer timeout in ticks (`SDOC_DEFAULT_TIMEOUT`, 0.5 s).
+pub const DEFAULT_TIMEOUT_TICKS: u32 = 5000;
+
+/// Transfer state (`tSdocState`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[repr(u8)]
+pub enum SdocState {
+    /// kSdocTransferNotActive.
+    #[default]
+    NotActive = 0,
+    /// kSdocTransferRunning.
+    Running = 1,
+    /// kSdocTransferTxAborted: this client aborted (timeout, bad reply).
+    TxAborted = 2,
+    /// kSdocTransferRxAborted: the server aborted.
+    RxAborted = 3,
+    /// kSdocTransferFinished.
+    Finished = 4,
+}
+
+/// Direction of a transfer (`tSdocType`; block transfers are not offered).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Direction {
+    /// Download (write to the server); expedited when ≤ 4 bytes.
+    Download,
+    /// Upload (read from the server).
+    Upload,
+}
+
+/// A client channel's parameters (`tSdocParam`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ClientParam {
+    /// COB-ID client -> server (bit 31 = not valid).
+    pub tx_cob: u32,
+    /// COB-ID server -> client (bit 31 = not valid).
+    pub rx_cob: u32,
+    /// Node-ID of the server.
+    pub server_node: u8,
+    /// Timeout in ticks; 0 = [`DEFAULT_TIMEOUT_TICKS`].
+    pub timeout_ticks: u32,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Phase {
+    InitiateSent,
+    SegmentSent,
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Transfer {
+    dir: Direction,
+    mux: Multiplexer,
+    buf: &'static [AtomicU8],
+    /// Download: bytes to send; upload: buffer capacity.
+    len: usize,
+    offset: usize,
+    toggle: bool,
+    phase: Phase,
+    deadline: Ticks,
+    timeout: u32,
+    /// Upload: size announced by the server.
+    announced: Option<u32>,
+}
+
+#[derive(Clone, Copy, Debug, Default)]
+struct Channel {
+    defined: bool,
+    param: ClientParam,
+    transfer: Option<Transfer>,
+    state: SdocState,
+    abort: u32,
+    transferred: u32,
+}
+
+/// The SDO client channels.
+#[derive(Clone, Debug)]
+pub struct SdoClient {
+    channels: [Channel; CAPACITY],
+}
+
+impl Default for SdoClient {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+fn cob_id(v: u32) -> Option<CanId> {
+    if v & 0x8000_0000 != 0 {
+        None
+    } else {
+        Some(CanId::from_cob_id(v))
+    }
+}
+
+impl SdoClient {
+    /// No channels defined.
+    pub const fn new() -> Self {
+        SdoClient {
+            channels: [Channel {
+                defined: false,
+                param: ClientParam {
+                    tx_cob: 0x8000_0000,
+                    rx_cob: 0x8000_0000,
+                    server_node: 0,
+                    timeout_ticks: 0,
+                },
+                transfer: None,
+                state: SdocState::NotActive,
+                abort: 0,
+                transferred: 0,
+            }; CAPACITY],
+        }
+    }
+
+    fn slot(index: u16) -> CopResult<usize> {
+        let n = usize::from(index.wrapping_sub(CLIENT_BASE_INDEX));
+        if index < CLIENT_BASE_INDEX || n >= CAPACITY {
+            return Err(CopKernel::SdocClientNotExist);
+        }
+        Ok(n)
+    }
+
+    fn channel(&self, index: u16) -> CopResult<&Channel> {
+        let c = self
+            .channels
+            .get(Self::slot(index)?)
+            .ok_or(CopKernel::SdocClientNotExist)?;
+        if c.defined {
+            Ok(c)
+        } else {
+            Err(CopKernel::SdocClientNotExist)
+        }
+    }
+
+    /// Loads channels from client objects 0x1280.. present in the
+    /// dictionary (sub 1 COB-ID client->server, sub 2 server->client, sub 3
+    /// server node-ID). Running transfers are dropped.
+    pub fn reconfigure(&mut self, od: &ObjectDictionary) {
+        for (n, c) in self.channels.iter_mut().enumerate() {
+            let index = CLIENT_BASE_INDEX + n as u16;
+            c.transfer = None;
+            if od.find_entry(index).is_none() {
+                continue;
+            }
+            let rd = |sub| {
+                od.read_uint(index, sub)
+                    .map(|v| v as u32)
+                    .unwrap_or(0x8000_0000)
+            };
+            c.defined = true;
+            c.param.tx_cob = rd(1);
+            c.param.rx_cob = rd(2);
+            c.param.server_node = od.read_uint(index, 3).map(|v| v as u8).unwrap_or(0);
+        }
+    }
+
+    /// Defines or updates a channel (`CcmSdocDefineClientTab`). Changing a
+    /// channel with a running transfer gives kCopSdocBusy; an index outside
+    /// 0x1280.. + capacity kCopSdocClientNotExist; COB-IDs above 11 bits
+    /// (without bit 29) kCopSdocInvalidParam.
+    pub fn define(&mut self, index: u16, p: ClientParam) -> CopResult {
+        for cob in [p.tx_cob, p.rx_cob] {
+            if cob & 0x8000_0000 == 0 && cob & 0x2000_0000 == 0 && cob > 0x7FF {
+                return Err(CopKernel::SdocInvalidParam);
+            }
+        }
+        if p.server_node > 127 {
+            return Err(CopKernel::SdocInvalidParam);
+        }
+        let c = self
+            .channels
+            .get_mut(Self::slot(index)?)
+            .ok_or(CopKernel::SdocClientNotExist)?;
+        if c.transfer.is_some() {
+            return Err(CopKernel::SdocBusy);
+        }
+        c.defined = true;
+        c.param = p;
+        Ok(())
+    }
+
+    /// The parameters of a channel.
+    pub fn param(&self, index: u16) -> CopResult<ClientParam> {
+        Ok(self.channel(index)?.param)
+    }
+
+    /// State and abort code of a channel (`CcmSdocGetState`).
+    pub fn state(&self, index: u16) -> CopResult<(SdocState, u32)> {
+        let c = self.channel(index)?;
+        Ok((c.state, c.abort))
+    }
+
+    /// Bytes moved by the last transfer (`SdocGetTransmittedBytes`).
+    pub fn transferred(&self, index: u16) -> CopResult<u32> {
+        Ok(self.channel(index)?.transferred)
+    }
+
+    /// Response COB-IDs of channels with a running transfer.
+    pub fn rx_ids(&self) -> impl Iterator<Item = CanId> + '_ {
+        self.channels
+            .iter()
+            .filter(|c| c.defined)
+            .filter_map(|c| cob_id(c.param.rx_cob))
+    }
+
+    /// Starts a transfer (`CcmSdocStartTransfer`). `buf` is read (download,
+    /// `len` bytes) or written (upload, at most `len` bytes) until the
+    /// transfer ends. Codes: kCopSdocClientNotExist, kCopSdocInvalidParam
+    /// (COB-IDs not valid, `len` larger than the buffer, empty download),
+    /// kCopSdocBusy (this channel, or another channel to the same server,
+    /// is running a transfer: CiA 301 allows one per server), or the
+    /// driver's code when the first frame cannot be sent.
+    #[allow(clippy::too_many_arguments)]
+    pub fn start(
+        &mut self,
+        port: &mut impl CanPort,
+        now: Ticks,
+        index: u16,
+        dir: Direction,
+        mux: Multiplexer,
+        buf: &'static [AtomicU8],
+        len: usize,
+        timeout_ticks: u32,
+    ) -> CopResult {
+        let slot = Self::slot(index)?;
+        let c = *self.channel(index)?;
+        let (Some(tx), Some(_)) = (cob_id(c.param.tx_cob), cob_id(c.param.rx_cob)) else {
+            return Err(CopKernel::SdocInvalidParam);
+        };
+        if len > buf.len() || (dir == Direction::Download && len == 0) {
+            return Err(CopKernel::SdocInvalidParam);
+        }
+        let busy_same_server = self.channels.iter().any(|o| {
+            o.transfer.is_some()
+                && o.defined
+                && (o.param.tx_cob == c.param.tx_cob || o.param.rx_cob == c.param.rx_cob)
+        });
+        if c.transfer.is_some() || busy_same_server {
+            return Err(CopKernel::SdocBusy);
+        }
+        let timeout = match (timeout_ticks, c.param.timeout_ticks) {
+            (0, 0) => DEFAULT_TIMEOUT_TICKS,
+            (0, t) => t,
+            (t, _) => t,
+        };
+        let mut t = Transfer {
+            dir,
+            mux,
+            buf,
+            len,
+            offset: 0,
+            toggle: false,
+            phase: Phase::InitiateSent,
+            deadline: now.plus(timeout),
+            timeout,
+            announced: None,
+        };
+        let frame = match dir {
+            Direction::Upload => ClientFrame::InitiateUpload { mux },
+            Direction::Download => {
+                let payload = if len <= EXPEDITED_MAX {
+                    let mut tmp = [0u8; EXPEDITED_MAX];
+                    let chunk = tmp.get_mut(..len).ok_or(CopKernel::SdocInvalidParam)?;
+                    load(buf, 0, chunk);
+                    Initiate::expedited(chunk).ok_or(CopKernel::SdocInvalidParam)?
+                } else {
+                    Initiate::Segmented {
+                        size: Some(len as u32),
+                    }
+                };
+                ClientFrame::InitiateDownload { mux, payload }
+            }
+        };
+        port.send(&frame.to_can(tx), Priority::Low)?;
+        if let Some(ch) = self.channels.get_mut(slot) {
+            if dir == Direction::Download && len <= EXPEDITED_MAX {
+                t.offset = len;
+            }
+            ch.transfer = Some(t);
+            ch.state = SdocState::Running;
+            ch.abort = 0;
+            ch.transferred = 0;
+        }
+        Ok(())
+    }
+
+    /// Aborts a running transfer with `code` (`CcmSdocAbort`); the server
+    /// is told. kCopSdocClientNotExist; kCopSdocTransferError when no
+    /// transfer runs.
+    pub fn abort(
+        &mut self,
+        port: &mut impl CanPort,
+        index: u16,
+        code: u32,
+        q: &mut ActionQueue,
+    ) -> CopResult {
+        let slot = Self::slot(index)?;
+        self.channel(index)?;
+        let Some(ch) = self.channels.get_mut(slot) else {
+            return Err(CopKernel::SdocClientNotExist);
+        };
+        let Some(t) = ch.transfer else {
+            return Err(CopKernel::SdocTransferError);
+        };
+        finish_tx_abort(ch, port, index, t.mux, code, q);
+        Ok(())
+    }
+
+    /// A frame that may be a response for one of the channels. Returns
+    /// `true` when a channel took it.
+    pub fn on_frame(
+        &mut self,
+        port: &mut impl CanPort,
+        frame: &CanFrame,
+        now: Ticks,
+        q: &mut ActionQueue,
+    ) -> bool {
+        for (n, ch) in self.channels.iter_mut().enumerate() {
+            if !ch.defined || cob_id(ch.param.rx_cob) != Some(frame.id) {
+                continue;
+            }
+            let index = CLIENT_BASE_INDEX + n as u16;
+            let Some(mut t) = ch.transfer else {
+                return true; // a late reply to a finished transfer
+            };
+            let reply = match ServerFrame::from_can(frame) {
+                Ok(r) => r,
+                Err(_) => {
+                    finish_tx_abort(ch, port, index, t.mux, SdoAbort::UnknownCommand.code(), q);
+                    return true;
+                }
+            };
+            if let ServerFrame::Abort { code, .. } = reply {
+                ch.transfer = None;
+                ch.state = SdocState::RxAborted;
+                ch.abort = code;
+                q.emit(Event::SdocFinished {
+                    client: index,
+                    state: SdocState::RxAborted as u8,
+                    abort: code,
+                });
+                return true;
+            }
+            let Some(tx) = cob_id(ch.param.tx_cob) else {
+                return true;
+            };
+            t.deadline = now.plus(t.timeout);
+            match step(&mut t, reply) {
+                Step::Send(f) => {
+                    if port.send(&f.to_can(tx), Priority::Low).is_err() {
+                        finish_tx_abort(ch, port, index, t.mux, SdoAbort::General.code(), q);
+                    } else {
+                        ch.transfer = Some(t);
+                    }
+                }
+                Step::Done => {
+                    ch.transfer = None;
+                    ch.state = SdocState::Finished;
+                    ch.transferred = t.offset as u32;
+                    q.emit(Event::SdocFinished {
+                        client: index,
+                        state: SdocState::Finished as u8,
+                        abort: 0,
+                    });
+                }
+                Step::Abort(code) => finish_tx_abort(ch, port, index, t.mux, code, q),
+            }
+            return true;
+        }
+        false
+    }
+
+    /// Timeout supervision: aborts (0x05040000) one timed-out transfer per
+    /// call. Returns `true` when nothing timed out.
+    pub fn poll(&mut self, port: &mut impl CanPort, now: Ticks, q: &mut ActionQueue) -> bool {
+        for (n, ch) in self.channels.iter_mut().enumerate() {
+            if let Some(t) = ch.transfer {
+                if now.is_after(t.deadline) {
+                    let index = CLIENT_BASE_INDEX + n as u16;
+                    finish_tx_abort(ch, port, index, t.mux, SdoAbort::Timeout.code(), q);
+                    return false;
+                }
+            }
+        }
+        true
+    }
+
+    /// Drops every transfer without telling the servers (reset, shutdown).
+    pub fn cancel_all(&mut self) {
+        for c in self.channels.iter_mut() {
+            if c.transfer.take().is_some() {
+                c.state = SdocState::NotActive;
+            }
+        }
+    }
+}
+
+fn finish_tx_abort(
+    ch: &mut Channel,
+    port: &mut impl CanPort,
+    index: u16,
+    mux: Multiplexer,
+    code: u32,
+    q: &mut ActionQueue,
+) {
+    if let Some(tx) = cob_id(ch.param.tx_cob) {
+        // The abort is best effort: the transfer ends here either way.
+        let _ = port.send(&ClientFrame::Abort { mux, code }.to_can(tx), Priority::Low);
+    }
+    ch.transfer = None;
+    ch.state = SdocState::TxAborted;
+    ch.abort = code;
+    q.emit(Event::SdocFinished {
+        client: index,
+        state: SdocState::TxAborted as u8,
+        abort: code,
+    });
+}
+
+fn load(buf: &[AtomicU8], from: usize, out: &mut [u8]) {
+    for (o, b) in out.iter_mut().zip(buf.iter().skip(from)) {
+        *o = b.load(Ordering::Relaxed);
+    }
+}
+
+fn store(buf: &[AtomicU8], at: usize, data: &[u8]) -> bool {
+    match buf.get(at..at + data.len()) {
+        Some(dst) => {
+            for (d, v) in dst.iter().zip(data) {
+                d.store(*v, Ordering::Relaxed);
+            }
+            true
+        }
+        None => false,
+    }
+}
+
+enum Step {
+    Send(ClientFrame),
+    Done,
+    Abort(u32),
+}
+
+fn next_download_segment(t: &mut Transfer) -> Step {
+    let n = (t.len - t.offset).min(SEGMENT_MAX);
+    let mut tmp = [0u8; SEGMENT_MAX];
+    let chunk = tmp.get_mut(..n).unwrap_or(&mut []);
+    load(t.buf, t.offset, chunk);
+    let Some(data) = SegmentData::new(chunk) else {
+        return Step::Abort(SdoAbort::General.code());
+    };
+    t.offset += n;
+    t.phase = Phase::SegmentSent;
+    Step::Send(ClientFrame::DownloadSegment {
+        toggle: t.toggle,
+        data,
+        last: t.offset >= t.len,
+    })
+}
+
+fn step(t: &mut Transfer, reply: ServerFrame) -> Step {
+    let general = SdoAbort::General.code();
+    let command = SdoAbort::UnknownCommand.code();
+    match (t.dir, t.phase, reply) {
+        (
+            Direction::Download,
+            Phase::InitiateSent,
+            ServerFrame::InitiateDownloadResponse { mux },
+        ) => {
+            if mux != t.mux {
+                return Step::Abort(general);
+            }
+            if t.offset >= t.len {
+                Step::Done // expedited: the data went with the request
+            } else {
+                next_download_segment(t)
+            }
+        }
+        (
+            Direction::Download,
+            Phase::SegmentSent,
+            ServerFrame::DownloadSegmentResponse { toggle },
+        ) => {
+            if toggle != t.toggle {
+                return Step::Abort(SdoAbort::ToggleBit.code());
+            }
+            t.toggle = !t.toggle;
+            if t.offset >= t.len {
+                Step::Done
+            } else {
+                next_download_segment(t)
+            }
+        }
+        (
+            Direction::Upload,
+            Phase::InitiateSent,
+            ServerFrame::InitiateUploadResponse { mux, payload },
+        ) => {
+            if mux != t.mux {
+                return Step::Abort(general);
+            }
+            match payload {
+                Initiate::Expedited { data, .. } => {
+                    let d = data.as_slice();
+                    if d.len() > t.len || !store(t.buf, 0, d) {
+                        return Step::Abort(SdoAbort::OutOfMemory.code());
+                    }
+                    t.offset = d.len();
+                    Step::Done
+                }
+                Initiate::Segmented { size } => {
+                    if size.is_some_and(|s| s as usize > t.len) {
+                        return Step::Abort(SdoAbort::OutOfMemory.code());
+                    }
+                    t.announced = size;
+                    t.phase = Phase::SegmentSent;
+                    Step::Send(ClientFrame::UploadSegment { toggle: t.toggle })
+                }
+            }
+        }
+        (
+            Direction::Upload,
+            Phase::SegmentSent,
+            ServerFrame::UploadSegmentResponse { toggle, data, last },
+        ) => {
+            if toggle != t.toggle {
+                return Step::Abort(SdoAbort::ToggleBit.code());
+            }
+            let d = data.as_slice();
+            if t.offset + d.len() > t.len || !store(t.buf, t.offset, d) {
+                return Step::Abort(SdoAbort::OutOfMemory.code());
+            }
+            t.offset += d.len();
+            t.toggle = !t.toggle;
+            if last {
+                if t.announced.is_some_and(|s| s as usize != t.offset) {
+                    return Step::Abort(SdoAbort::LengthMismatch.code());
+                }
+                Step::Done
+            } else {
+                Step::Send(ClientFrame::UploadSegment { toggle: t.toggle })
+            }
+        }
+        _ => Step::Abort(command),
+    }
+}

@@ -1,0 +1,290 @@
+//! SDO client against this library's SDO server on the simulated bus:
+//! expedited and segmented transfers both ways, aborts from the server,
+//! timeout, one transfer per server, buffer bounds (CiA 301 SDO protocols).
+
+use core::sync::atomic::AtomicU8;
+use std::sync::{Mutex, MutexGuard};
+
+use cop::ccm::Stack;
+use cop::event::{Event, NmtState};
+use cop::od::{Access, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
+use cop::sdo::client::{ClientParam, Direction, SdocState};
+use cop::sim::{SimBus, SimPort};
+use cop::wire::sdo::Multiplexer;
+
+static SERIAL: Mutex<()> = Mutex::new(());
+fn serial() -> MutexGuard<'static, ()> {
+    SERIAL.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+// Server dictionary (node 2).
+static U32_VAR: [AtomicU8; 4] = decl::zeroed();
+static TEXT: [AtomicU8; 41] = decl::zeroed();
+static S2000: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+    0,
+    DataType::UInt32,
+    Access::RW,
+    &U32_VAR,
+    None,
+)];
+static S2001: [ObdSubEntry; 1] = [ObdSubEntry::ram_string(0, Access::RW, &TEXT, c"")];
+static S2002: [ObdSubEntry; 1] = [ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[0x5A])];
+static SERVER_MAN: [ObdEntry; 3] = [
+    ObdEntry::new(0x2000, &S2000, None),
+    ObdEntry::new(0x2001, &S2001, None),
+    ObdEntry::new(0x2002, &S2002, None),
+];
+
+// Client buffers (node 1).
+static TX_BUF: [AtomicU8; 40] = decl::zeroed();
+static RX_BUF: [AtomicU8; 40] = decl::zeroed();
+static SMALL_BUF: [AtomicU8; 8] = decl::zeroed();
+
+fn node(bus: &SimBus, od: ObjectDictionary, id: u8) -> (SimPort, Stack) {
+    let mut port = bus.attach(64);
+    let mut s = Stack::new(od, id).unwrap();
+    while s.drain(&mut port, bus.now()).is_some() {}
+    s.connect().unwrap();
+    while s.drain(&mut port, bus.now()).is_some() {}
+    (port, s)
+}
+
+struct Net {
+    bus: SimBus,
+    master: (SimPort, Stack),
+    server: (SimPort, Stack),
+    finished: Vec<Event>,
+}
+
+impl Net {
+    fn new() -> Net {
+        let bus = SimBus::new();
+        let server = node(
+            &bus,
+            ObjectDictionary::new(&[], &SERVER_MAN, &[]).unwrap(),
+            2,
+        );
+        let mut master = node(&bus, ObjectDictionary::empty(), 1);
+        let p = ClientParam {
+            tx_cob: 0x602,
+            rx_cob: 0x582,
+            server_node: 2,
+            timeout_ticks: 0,
+        };
+        master
+            .1
+            .define_sdo_client(&mut master.0, 0x1280, p)
+            .unwrap();
+        bus.clear_trace();
+        Net {
+            bus,
+            master,
+            server,
+            finished: Vec::new(),
+        }
+    }
+
+    fn run(&mut self, cycles: usize) {
+        for _ in 0..cycles {
+            let now = self.bus.now();
+            self.server.1.process(&mut self.server.0, now, |_, _| {});
+            let fin = &mut self.finished;
+            self.master.1.process(&mut self.master.0, now, |_, e| {
+                if matches!(e, Event::SdocFinished { .. }) {
+                    fin.push(e);
+                }
+            });
+            self.bus.advance_ms(1);
+        }
+    }
+
+    fn start(
+        &mut self,
+        dir: Direction,
+        index: u16,
+        buf: &'static [AtomicU8],
+        len: usize,
+    ) -> cop::CopResult {
+        let now = self.bus.now();
+        let (port, stack) = &mut self.master;
+        stack.sdo_client_start(
+            port,
+            now,
+            0x1280,
+            dir,
+            Multiplexer::new(index, 0),
+            buf,
+            len,
+            0,
+        )
+    }
+
+    fn state(&self) -> (SdocState, u32) {
+        self.master.1.sdoc().state(0x1280).unwrap()
+    }
+}
+
+#[test]
+fn expedited_download_and_upload() {
+    let _g = serial();
+    let mut net = Net::new();
+    decl::set(array4(&TX_BUF), [0x78, 0x56, 0x34, 0x12]);
+    net.start(Direction::Download, 0x2000, &TX_BUF, 4).unwrap();
+    net.run(3);
+    assert_eq!(net.state(), (SdocState::Finished, 0));
+    assert_eq!(decl::get(&U32_VAR), 0x1234_5678u32.to_ne_bytes());
+    // CiA 301 expedited download with size: 0x23 = ccs 1, n = 0, e, s.
+    let t = net.bus.trace();
+    assert_eq!(t[0], "  can0  602   [8]  23 00 20 00 78 56 34 12");
+    assert_eq!(t[1], "  can0  582   [8]  60 00 20 00 00 00 00 00");
+    net.start(Direction::Upload, 0x2002, &RX_BUF, 40).unwrap();
+    net.run(3);
+    assert_eq!(net.state(), (SdocState::Finished, 0));
+    assert_eq!(net.master.1.sdoc().transferred(0x1280), Ok(1));
+    assert_eq!(decl::get(array4(&RX_BUF))[0], 0x5A);
+    assert_eq!(net.finished.len(), 2);
+}
+
+fn array4(b: &'static [AtomicU8; 40]) -> &'static [AtomicU8; 4] {
+    b[..4].try_into().unwrap()
+}
+
+#[test]
+fn segmented_string_both_ways() {
+    let _g = serial();
+    let mut net = Net::new();
+    let text = b"safety data object configured over SDO!";
+    assert_eq!(text.len(), 39);
+    let mut src = [0u8; 40];
+    src[..39].copy_from_slice(text);
+    decl::set(&TX_BUF, src);
+    net.start(Direction::Download, 0x2001, &TX_BUF, 39).unwrap();
+    net.run(20);
+    assert_eq!(net.state(), (SdocState::Finished, 0));
+    assert_eq!(&decl::get(&TEXT)[..39], text);
+    decl::set(&RX_BUF, [0; 40]);
+    net.start(Direction::Upload, 0x2001, &RX_BUF, 40).unwrap();
+    net.run(20);
+    assert_eq!(net.state(), (SdocState::Finished, 0));
+    assert_eq!(net.master.1.sdoc().transferred(0x1280), Ok(39));
+    assert_eq!(&decl::get(&RX_BUF)[..39], text);
+}
+
+#[test]
+fn server_abort_is_reported_with_its_code() {
+    let _g = serial();
+    let mut net = Net::new();
+    net.start(Direction::Upload, 0x2FFF, &RX_BUF, 40).unwrap();
+    net.run(3);
+    // CiA 301: 0x06020000 object does not exist.
+    assert_eq!(net.state(), (SdocState::RxAborted, 0x0602_0000));
+    assert_eq!(
+        net.finished,
+        vec![Event::SdocFinished {
+            client: 0x1280,
+            state: SdocState::RxAborted as u8,
+            abort: 0x0602_0000
+        }]
+    );
+    // Writing a read-only object: 0x06010002.
+    net.start(Direction::Download, 0x2002, &TX_BUF, 1).unwrap();
+    net.run(3);
+    assert_eq!(net.state(), (SdocState::RxAborted, 0x0601_0002));
+}
+
+#[test]
+fn upload_never_writes_past_the_buffer() {
+    let _g = serial();
+    let mut net = Net::new();
+    let mut src = [0u8; 40];
+    src[..20].copy_from_slice(b"twenty bytes of text");
+    decl::set(&TX_BUF, src);
+    net.start(Direction::Download, 0x2001, &TX_BUF, 20).unwrap();
+    net.run(10);
+    decl::set(&SMALL_BUF, [0xEE; 8]);
+    net.start(Direction::Upload, 0x2001, &SMALL_BUF, 4).unwrap();
+    net.run(10);
+    // The server announces 20 bytes; the client aborts with 0x05040005
+    // (out of memory) and leaves the buffer beyond 4 bytes untouched.
+    assert_eq!(net.state(), (SdocState::TxAborted, 0x0504_0005));
+    assert_eq!(&decl::get(&SMALL_BUF)[4..], &[0xEE; 4]);
+    assert!(
+        net.bus
+            .trace()
+            .iter()
+            .any(|l| l == "  can0  602   [8]  80 01 20 00 05 00 04 05")
+    );
+}
+
+#[test]
+fn timeout_aborts_and_busy_is_refused() {
+    let _g = serial();
+    let mut net = Net::new();
+    // Stop the server: it stays silent.
+    let now = net.bus.now();
+    let (sp, ss) = &mut net.server;
+    ss.exec_command(cop::ccm::NmtCommand::StopRemoteNode)
+        .unwrap();
+    while ss.drain(sp, now).is_some() {}
+    assert_eq!(ss.nmt_state(), NmtState::Stopped);
+    net.start(Direction::Upload, 0x2000, &RX_BUF, 4).unwrap();
+    assert_eq!(
+        net.start(Direction::Upload, 0x2000, &RX_BUF, 4),
+        Err(cop::CopKernel::SdocBusy)
+    );
+    net.run(499);
+    assert_eq!(net.state().0, SdocState::Running);
+    net.run(3);
+    // SDOC default timeout 5000 ticks = 0.5 s; abort 0x05040000 sent.
+    assert_eq!(net.state(), (SdocState::TxAborted, 0x0504_0000));
+    assert!(
+        net.bus
+            .trace()
+            .iter()
+            .any(|l| l == "  can0  602   [8]  80 00 20 00 00 00 04 05")
+    );
+}
+
+#[test]
+fn bad_arguments_give_codes() {
+    let _g = serial();
+    let mut net = Net::new();
+    let now = net.bus.now();
+    let (port, stack) = &mut net.master;
+    assert_eq!(
+        stack.sdo_client_start(
+            port,
+            now,
+            0x1290,
+            Direction::Upload,
+            Multiplexer::new(0x2000, 0),
+            &RX_BUF,
+            4,
+            0
+        ),
+        Err(cop::CopKernel::SdocClientNotExist)
+    );
+    assert_eq!(
+        stack.sdo_client_start(
+            port,
+            now,
+            0x1280,
+            Direction::Download,
+            Multiplexer::new(0x2000, 0),
+            &SMALL_BUF,
+            9,
+            0
+        ),
+        Err(cop::CopKernel::SdocInvalidParam)
+    );
+    let bad = ClientParam {
+        tx_cob: 0x900,
+        rx_cob: 0x582,
+        server_node: 2,
+        timeout_ticks: 0,
+    };
+    assert_eq!(
+        stack.define_sdo_client(port, 0x1281, bad),
+        Err(cop::CopKernel::SdocInvalidParam)
+    );
+}
