@@ -60,6 +60,11 @@ if ! cbindgen --version 2>/dev/null | grep -q "$CBINDGEN_VERSION"; then
     cargo install cbindgen --version "$CBINDGEN_VERSION" --locked --quiet
 fi
 
+if ! cargo fuzz --version >/dev/null 2>&1; then
+    log "cargo install cargo-fuzz"
+    cargo install cargo-fuzz --locked --quiet
+fi
+
 if ! python3 -c "import canopen, can, sys; sys.exit(0 if canopen.__version__ == '$PY_CANOPEN_VERSION' else 1)" 2>/dev/null; then
     log "pip: canopen $PY_CANOPEN_VERSION, python-can $PY_CAN_VERSION"
     python3 -m pip install --quiet --disable-pip-version-check \
