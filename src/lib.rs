@@ -44,6 +44,8 @@ pub mod wire;
 
 #[cfg(any(test, feature = "std"))]
 pub mod sim;
+#[cfg(any(test, feature = "std"))]
+pub mod testod;
 
 #[allow(unsafe_code)]
 pub mod ffi;

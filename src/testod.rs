@@ -1,0 +1,231 @@
+//! A reference dictionary with every storage kind and access variant
+//! (host builds): the fixture of the fuzz targets, the benchmarks and
+//! tests that need "a realistic device" rather than a minimal one.
+//!
+//! Its variables are process-wide statics; users that run in parallel
+//! threads must serialise themselves.
+
+use core::sync::atomic::AtomicU8;
+
+use crate::od::{Access, DataType, ObdEntry, ObdSubEntry, ObdVarEntry, ObjectDictionary, decl};
+
+static DEVICE_TYPE: [u8; 4] = 0x0001_0191u32.to_ne_bytes();
+static S1000: [ObdSubEntry; 1] = [ObdSubEntry::rom(
+    0,
+    DataType::UInt32,
+    Access::R,
+    &DEVICE_TYPE,
+)];
+static ERR_REG: [AtomicU8; 1] = decl::zeroed();
+static S1001: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+    0,
+    DataType::UInt8,
+    Access::R,
+    &ERR_REG,
+    Some(&[0]),
+)];
+static NAME: &[u8] = b"cop reference device";
+static S1008: [ObdSubEntry; 1] = [ObdSubEntry::rom_string(0, Access::R, NAME)];
+static HB: [AtomicU8; 2] = decl::zeroed();
+static HB_DEF: [u8; 2] = 0u16.to_ne_bytes();
+static S1017: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+    0,
+    DataType::UInt16,
+    Access::SRW,
+    &HB,
+    Some(&HB_DEF),
+)];
+static ID_VENDOR: [u8; 4] = 0x0000_0123u32.to_ne_bytes();
+static ID_PRODUCT: [u8; 4] = 0x0000_0456u32.to_ne_bytes();
+static ID_REVISION: [u8; 4] = 0x0001_0000u32.to_ne_bytes();
+static ID_SERIAL: [u8; 4] = 0x0000_0789u32.to_ne_bytes();
+static S1018: [ObdSubEntry; 5] = [
+    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[4]),
+    ObdSubEntry::rom(1, DataType::UInt32, Access::R, &ID_VENDOR),
+    ObdSubEntry::rom(2, DataType::UInt32, Access::R, &ID_PRODUCT),
+    ObdSubEntry::rom(3, DataType::UInt32, Access::R, &ID_REVISION),
+    ObdSubEntry::rom(4, DataType::UInt32, Access::R, &ID_SERIAL),
+];
+
+static V2000: [AtomicU8; 1] = decl::zeroed();
+static V2001: [AtomicU8; 2] = decl::zeroed();
+static L2001: [u8; 6] = {
+    let d = 0i16.to_ne_bytes();
+    let l = (-100i16).to_ne_bytes();
+    let h = 100i16.to_ne_bytes();
+    [d[0], d[1], l[0], l[1], h[0], h[1]]
+};
+static V2002: [AtomicU8; 4] = decl::zeroed();
+static V2003: [AtomicU8; 65] = decl::zeroed();
+static V2005: [AtomicU8; 4] = decl::zeroed();
+static E2005: ObdVarEntry = ObdVarEntry::new();
+static V2006: [AtomicU8; 300] = decl::zeroed();
+static E2006: ObdVarEntry = ObdVarEntry::new();
+static V2007: [AtomicU8; 8] = decl::zeroed();
+static V2008: [AtomicU8; 8] = decl::zeroed();
+static V2009: [AtomicU8; 4] = decl::zeroed();
+static L2009: [u8; 12] = {
+    let d = 0.0f32.to_ne_bytes();
+    let l = (-1.0f32).to_ne_bytes();
+    let h = 1.0f32.to_ne_bytes();
+    [
+        d[0], d[1], d[2], d[3], l[0], l[1], l[2], l[3], h[0], h[1], h[2], h[3],
+    ]
+};
+static V200A: [AtomicU8; 1] = decl::zeroed();
+static V200B: [AtomicU8; 8] = decl::zeroed();
+
+static S2000: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+    0,
+    DataType::UInt8,
+    Access::PRW,
+    &V2000,
+    Some(&[0]),
+)];
+static S2001: [ObdSubEntry; 1] = [ObdSubEntry::ram_range(
+    0,
+    DataType::Int16,
+    Access::PRW,
+    &V2001,
+    &L2001,
+)];
+static S2002: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+    0,
+    DataType::UInt32,
+    Access::PRW,
+    &V2002,
+    None,
+)];
+static S2003: [ObdSubEntry; 1] = [ObdSubEntry::ram_string(0, Access::RW, &V2003, c"hello")];
+static S2004: [ObdSubEntry; 1] = [ObdSubEntry::rom_string(0, Access::R, b"constant text")];
+static S2005: [ObdSubEntry; 1] = [ObdSubEntry::var(
+    0,
+    DataType::UInt32,
+    Access::PRW,
+    &E2005,
+    4,
+    None,
+)];
+static S2006: [ObdSubEntry; 1] = [ObdSubEntry::var(
+    0,
+    DataType::Domain,
+    Access::RW,
+    &E2006,
+    0,
+    None,
+)];
+static S2007: [ObdSubEntry; 2] = [
+    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[8]),
+    ObdSubEntry {
+        m_bAccess: Access::PRW.0 | Access::ARRAY,
+        ..ObdSubEntry::ram(1, DataType::UInt8, Access::PRW, &V2007, None)
+    },
+];
+static S2008: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+    0,
+    DataType::UInt64,
+    Access::RW,
+    &V2008,
+    None,
+)];
+static S2009: [ObdSubEntry; 1] = [ObdSubEntry::ram_range(
+    0,
+    DataType::Real32,
+    Access::RW,
+    &V2009,
+    &L2009,
+)];
+static S200A: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+    0,
+    DataType::UInt8,
+    Access::W,
+    &V200A,
+    None,
+)];
+static S200B: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+    0,
+    DataType::TimeOfDay,
+    Access::RW,
+    &V200B,
+    None,
+)];
+
+static GENERIC: [ObdEntry; 5] = [
+    ObdEntry::new(0x1000, &S1000, None),
+    ObdEntry::new(0x1001, &S1001, None),
+    ObdEntry::new(0x1008, &S1008, None),
+    ObdEntry::new(0x1017, &S1017, None),
+    ObdEntry::new(0x1018, &S1018, None),
+];
+
+/// Element array of 0x2007 (8 × U8, subindices 1..8).
+pub fn array_2007() -> &'static [AtomicU8; 8] {
+    &V2007
+}
+
+static MANUFACTURER: [ObdEntry; 12] = [
+    ObdEntry::new(0x2000, &S2000, None),
+    ObdEntry::new(0x2001, &S2001, None),
+    ObdEntry::new(0x2002, &S2002, None),
+    ObdEntry::new(0x2003, &S2003, None),
+    ObdEntry::new(0x2004, &S2004, None),
+    ObdEntry::new(0x2005, &S2005, None),
+    ObdEntry::new(0x2006, &S2006, None),
+    ObdEntry::new(0x2007, &S2007, None),
+    ObdEntry::new(0x2008, &S2008, None),
+    ObdEntry::new(0x2009, &S2009, None),
+    ObdEntry::new(0x200A, &S200A, None),
+    ObdEntry::new(0x200B, &S200B, None),
+];
+
+/// The reference dictionary (USERDEF 0x2005 and DOMAIN 0x2006 attached).
+pub fn dictionary() -> ObjectDictionary {
+    E2005.attach(&V2005);
+    E2006.attach(&V2006);
+    // The tables above are sorted and well-formed; a failure here would be
+    // a bug in this file, caught by its own test.
+    ObjectDictionary::new(&GENERIC, &MANUFACTURER, &[]).unwrap_or(ObjectDictionary::empty())
+}
+
+/// Part tables, for building the same dictionary through the C path.
+pub fn parts() -> (&'static [ObdEntry], &'static [ObdEntry]) {
+    E2005.attach(&V2005);
+    E2006.attach(&V2006);
+    (&GENERIC, &MANUFACTURER)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::od::{ByteOrder, NoHooks};
+
+    #[test]
+    fn reference_dictionary_is_valid_and_usable() {
+        let od = dictionary();
+        assert_eq!(od.len(), 17);
+        // The stack restores the defaults at reset; do the same here.
+        od.restore_defaults(0x1000, 0xFFFF);
+        let mut b = [0u8; 64];
+        assert_eq!(od.read(0x2003, 0, ByteOrder::Wire, &mut b), Ok(5));
+        assert_eq!(&b[..5], b"hello");
+        od.write(0x2007, 8, ByteOrder::Wire, &[0xAB], &mut NoHooks)
+            .unwrap();
+        assert_eq!(od.read(0x2007, 8, ByteOrder::Wire, &mut b), Ok(1));
+        assert_eq!(b[0], 0xAB);
+        assert!(od.read(0x2007, 9, ByteOrder::Wire, &mut b).is_err());
+        assert_eq!(
+            od.write(
+                0x2001,
+                0,
+                ByteOrder::Wire,
+                &101i16.to_le_bytes(),
+                &mut NoHooks
+            ),
+            Err(crate::OdError::TOO_HIGH)
+        );
+        assert_eq!(
+            od.read(0x200A, 0, ByteOrder::Wire, &mut b),
+            Err(crate::OdError::READ)
+        );
+    }
+}
