@@ -78,6 +78,7 @@ impl NmtCommand {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Phase {
     Overrun,
+    OverrunReport,
     Receive,
     /// SRDO timers (resumable).
     SrdoTimers,
@@ -351,7 +352,13 @@ impl Stack {
                     if port.take_rx_overrun() && self.connected {
                         self.srdo.on_rx_overrun();
                     }
-                    self.phase = Phase::Receive;
+                    self.phase = Phase::OverrunReport;
+                }
+                Phase::OverrunReport => {
+                    // One SRDO per step keeps the action queue small.
+                    if self.srdo.report_overrun(&mut self.queue) {
+                        self.phase = Phase::Receive;
+                    }
                 }
                 Phase::Receive => match port.receive() {
                     Some(f) => self.on_frame(port, &f, now),

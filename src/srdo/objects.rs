@@ -1,0 +1,403 @@
+//! Declaring the SRDO objects in Rust, mirroring the C macros of manual
+//! 2.10.1 (`OBD_CREATE_SRDO_GFC_PARAM`, `OBD_CREATE_SRDO_COMMU`,
+//! `OBD_BEGIN_SRDO_MAPP` ... `OBD_END_SRDO_MAPP`,
+//! `OBD_CREATE_SRDO_CFG_VALID`, `OBD_BEGIN_SRDO_CRC` ... `OBD_END_SRDO_CRC`).
+//! The C objdef.h produces the same layout:
+//!
+//! | object | sub | type | access | storage |
+//! |---|---|---|---|---|
+//! | 0x1300 | 0 | U8 | RW | RAM, default 0 |
+//! | 0x1301+n | 0 | U8 | const 6 | |
+//! | | 1 direction | U8 | SRW | RAM |
+//! | | 2 refresh time / SCT | U16 | SRW | RAM |
+//! | | 3 SRVT | U8 | SRW | RAM |
+//! | | 4 transmission type | U8 | const 254 | |
+//! | | 5, 6 COB-IDs | U32 | SRW | RAM |
+//! | 0x1381+n | 0 | U8 | SRW (const with static mapping) | RAM |
+//! | | 1..=`SRDO_MAX_MAPPENTRIES` | U32 | SRW (const with static mapping) | RAM |
+//! | 0x13FE | 0 | U8 | RW | RAM, default 0 |
+//! | 0x13FF | 0 | U8 | const count | |
+//! | | 1..=count | U16 | RW | RAM |
+//!
+//! Each macro declares a module holding the variables, the subindex table
+//! `SUBS` and the index `INDEX`; [`srdo_obd_entry!`](crate::srdo_obd_entry)
+//! turns such a module into the `ObdEntry` of a part table:
+//!
+//! ```
+//! use cop::od::ObdEntry;
+//! cop::obd_create_srdo_gfc_param!(pub mod gfc);
+//! cop::obd_create_srdo_commu!(pub mod srdo1, 0x1301, 1, 25, 20, 0x101, 0x102);
+//! cop::obd_create_srdo_mapp!(pub mod srdo1_mapp, 0x1381, [0x6200_0110, 0x6201_0110]);
+//! cop::obd_create_srdo_cfg_valid!(pub mod cfg_valid);
+//! cop::obd_create_srdo_crc!(pub mod crc, [0x0000]);
+//! static PART: [ObdEntry; 5] = [
+//!     cop::srdo_obd_entry!(gfc),
+//!     cop::srdo_obd_entry!(srdo1),
+//!     cop::srdo_obd_entry!(srdo1_mapp),
+//!     cop::srdo_obd_entry!(cfg_valid),
+//!     cop::srdo_obd_entry!(crc),
+//! ];
+//! ```
+
+use core::sync::atomic::AtomicU8;
+
+use crate::config::SRDO_MAX_MAPPENTRIES;
+use crate::od::{Access, DataType, ObdSubEntry};
+
+/// Subindices of a communication parameter (0..=6).
+pub const COMMU_SUBS: usize = 7;
+/// Subindices of a mapping parameter (0..=`SRDO_MAX_MAPPENTRIES`).
+pub const MAPP_SUBS: usize = 1 + SRDO_MAX_MAPPENTRIES;
+
+/// Fills arrays of subindex descriptions before each element is set.
+const PLACEHOLDER: ObdSubEntry = ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[0]);
+
+/// The variables of one communication parameter (CPU byte order).
+#[derive(Debug)]
+pub struct CommuVars {
+    /// Sub 1, information direction.
+    pub direction: [AtomicU8; 1],
+    /// Sub 2, refresh time / SCT in ms.
+    pub sct: [AtomicU8; 2],
+    /// Sub 3, SRVT in ms.
+    pub srvt: [AtomicU8; 1],
+    /// Sub 5, COB-ID 1.
+    pub cob1: [AtomicU8; 4],
+    /// Sub 6, COB-ID 2.
+    pub cob2: [AtomicU8; 4],
+}
+
+impl CommuVars {
+    /// All zero (the stack loads the defaults at reset communication).
+    pub const fn new() -> Self {
+        CommuVars {
+            direction: crate::od::decl::zeroed(),
+            sct: crate::od::decl::zeroed(),
+            srvt: crate::od::decl::zeroed(),
+            cob1: crate::od::decl::zeroed(),
+            cob2: crate::od::decl::zeroed(),
+        }
+    }
+}
+
+impl Default for CommuVars {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Default values of one communication parameter (CPU byte order).
+#[derive(Debug)]
+pub struct CommuDefaults {
+    direction: [u8; 1],
+    sct: [u8; 2],
+    srvt: [u8; 1],
+    cob1: [u8; 4],
+    cob2: [u8; 4],
+}
+
+impl CommuDefaults {
+    /// The defaults `OBD_CREATE_SRDO_COMMU(ind, num, dir, sct, srvt, cob1,
+    /// cob2)` gives.
+    pub const fn new(direction: u8, sct_ms: u16, srvt_ms: u8, cob1: u32, cob2: u32) -> Self {
+        CommuDefaults {
+            direction: [direction],
+            sct: sct_ms.to_ne_bytes(),
+            srvt: [srvt_ms],
+            cob1: cob1.to_ne_bytes(),
+            cob2: cob2.to_ne_bytes(),
+        }
+    }
+}
+
+/// The subindex table of 0x1301+n.
+pub const fn commu_subs(
+    vars: &'static CommuVars,
+    defaults: &'static CommuDefaults,
+) -> [ObdSubEntry; COMMU_SUBS] {
+    [
+        ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[6]),
+        ObdSubEntry::ram(
+            1,
+            DataType::UInt8,
+            Access::SRW,
+            &vars.direction,
+            Some(&defaults.direction),
+        ),
+        ObdSubEntry::ram(
+            2,
+            DataType::UInt16,
+            Access::SRW,
+            &vars.sct,
+            Some(&defaults.sct),
+        ),
+        ObdSubEntry::ram(
+            3,
+            DataType::UInt8,
+            Access::SRW,
+            &vars.srvt,
+            Some(&defaults.srvt),
+        ),
+        ObdSubEntry::rom(4, DataType::UInt8, Access::R, &[254]),
+        ObdSubEntry::ram(
+            5,
+            DataType::UInt32,
+            Access::SRW,
+            &vars.cob1,
+            Some(&defaults.cob1),
+        ),
+        ObdSubEntry::ram(
+            6,
+            DataType::UInt32,
+            Access::SRW,
+            &vars.cob2,
+            Some(&defaults.cob2),
+        ),
+    ]
+}
+
+/// The variables of one mapping parameter (CPU byte order).
+#[derive(Debug)]
+pub struct MappVars {
+    /// Sub 0, number of mapped entries.
+    pub count: [AtomicU8; 1],
+    /// Subs 1.., four bytes each.
+    pub entries: [AtomicU8; 4 * SRDO_MAX_MAPPENTRIES],
+}
+
+impl MappVars {
+    /// All zero.
+    pub const fn new() -> Self {
+        MappVars {
+            count: crate::od::decl::zeroed(),
+            entries: crate::od::decl::zeroed(),
+        }
+    }
+}
+
+impl Default for MappVars {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Default values of one mapping parameter (CPU byte order).
+#[derive(Debug)]
+pub struct MappDefaults {
+    count: [u8; 1],
+    entries: [u8; 4 * SRDO_MAX_MAPPENTRIES],
+}
+
+impl MappDefaults {
+    /// Sub 0 = number of `entries`, subs 1.. = `entries`, the rest 0. At
+    /// most `SRDO_MAX_MAPPENTRIES` entries (more fail to compile).
+    // Indexing is bounded by the loop condition and the assertion, which
+    // is evaluated at compile time for every static using it.
+    #[allow(clippy::indexing_slicing)]
+    pub const fn new(entries: &[u32]) -> Self {
+        assert!(entries.len() <= SRDO_MAX_MAPPENTRIES);
+        let mut bytes = [0u8; 4 * SRDO_MAX_MAPPENTRIES];
+        let mut i = 0;
+        while i < entries.len() {
+            let b = entries[i].to_ne_bytes();
+            bytes[4 * i] = b[0];
+            bytes[4 * i + 1] = b[1];
+            bytes[4 * i + 2] = b[2];
+            bytes[4 * i + 3] = b[3];
+            i += 1;
+        }
+        MappDefaults {
+            count: [entries.len() as u8],
+            entries: bytes,
+        }
+    }
+}
+
+/// The subindex table of 0x1381+n: RAM variables with dynamic mapping,
+/// constants (the defaults) with static mapping.
+// Indexing is bounded by the loop condition.
+#[allow(clippy::indexing_slicing)]
+pub const fn mapp_subs(
+    vars: &'static MappVars,
+    defaults: &'static MappDefaults,
+) -> [ObdSubEntry; MAPP_SUBS] {
+    let mut subs = [PLACEHOLDER; MAPP_SUBS];
+    subs[0] = if crate::config::SRDO_USE_STATIC_MAPPING {
+        ObdSubEntry::rom(0, DataType::UInt8, Access::R, &defaults.count)
+    } else {
+        ObdSubEntry::ram(
+            0,
+            DataType::UInt8,
+            Access::SRW,
+            &vars.count,
+            Some(&defaults.count),
+        )
+    };
+    let mut i = 0;
+    while i < SRDO_MAX_MAPPENTRIES {
+        let var = vars.entries.as_slice().split_at(4 * i).1.split_at(4).0;
+        let def = defaults.entries.as_slice().split_at(4 * i).1.split_at(4).0;
+        let sub = (i + 1) as u8;
+        subs[i + 1] = if crate::config::SRDO_USE_STATIC_MAPPING {
+            ObdSubEntry::rom(sub, DataType::UInt32, Access::R, def)
+        } else {
+            ObdSubEntry::ram(sub, DataType::UInt32, Access::SRW, var, Some(def))
+        };
+        i += 1;
+    }
+    subs
+}
+
+/// The subindex table of 0x1300 (GFC parameter, default 0).
+pub const fn gfc_param_subs(var: &'static [AtomicU8; 1]) -> [ObdSubEntry; 1] {
+    [ObdSubEntry::ram(
+        0,
+        DataType::UInt8,
+        Access::RW,
+        var,
+        Some(&[0]),
+    )]
+}
+
+/// The subindex table of 0x13FE (configuration valid, default 0).
+pub const fn cfg_valid_subs(var: &'static [AtomicU8; 1]) -> [ObdSubEntry; 1] {
+    [ObdSubEntry::ram(
+        0,
+        DataType::UInt8,
+        Access::RW,
+        var,
+        Some(&[0]),
+    )]
+}
+
+/// The CRC defaults in CPU byte order, two bytes per entry.
+// Indexing is bounded by the loop condition.
+#[allow(clippy::indexing_slicing)]
+pub const fn crc_defaults<const B: usize>(crcs: &[u16]) -> [u8; B] {
+    let mut out = [0u8; B];
+    let mut i = 0;
+    while i < crcs.len() && 2 * i + 1 < B {
+        let b = crcs[i].to_ne_bytes();
+        out[2 * i] = b[0];
+        out[2 * i + 1] = b[1];
+        i += 1;
+    }
+    out
+}
+
+/// The subindex table of 0x13FF with `S - 1` CRC entries: sub 0 the
+/// constant `count`, subs 1.. U16 RW variables of two bytes each in `vars`
+/// with defaults in `defaults`.
+// Indexing is bounded by the loop condition.
+#[allow(clippy::indexing_slicing)]
+pub const fn crc_subs<const S: usize>(
+    count: &'static [u8; 1],
+    vars: &'static [AtomicU8],
+    defaults: &'static [u8],
+) -> [ObdSubEntry; S] {
+    let mut subs = [PLACEHOLDER; S];
+    subs[0] = ObdSubEntry::rom(0, DataType::UInt8, Access::R, count);
+    let mut i = 0;
+    while i + 1 < S {
+        let var = vars.split_at(2 * i).1.split_at(2).0;
+        let def = defaults.split_at(2 * i).1.split_at(2).0;
+        subs[i + 1] = ObdSubEntry::ram((i + 1) as u8, DataType::UInt16, Access::RW, var, Some(def));
+        i += 1;
+    }
+    subs
+}
+
+/// `OBD_CREATE_SRDO_GFC_PARAM()`: object 0x1300 in a module `$m`.
+#[macro_export]
+macro_rules! obd_create_srdo_gfc_param {
+    ($vis:vis mod $m:ident) => {
+        #[allow(missing_docs)]
+        $vis mod $m {
+            pub const INDEX: u16 = $crate::srdo::GFC_PARAM_INDEX;
+            pub static VALUE: [::core::sync::atomic::AtomicU8; 1] = $crate::od::decl::zeroed();
+            pub static SUBS: [$crate::od::ObdSubEntry; 1] =
+                $crate::srdo::objects::gfc_param_subs(&VALUE);
+        }
+    };
+}
+
+/// `OBD_CREATE_SRDO_COMMU(ind, num, dir, sct, srvt, cob1, cob2)`: the
+/// communication parameter `$index` (0x1301..=0x1340) in a module `$m`.
+#[macro_export]
+macro_rules! obd_create_srdo_commu {
+    ($vis:vis mod $m:ident, $index:expr, $dir:expr, $sct:expr, $srvt:expr, $cob1:expr, $cob2:expr) => {
+        #[allow(missing_docs)]
+        $vis mod $m {
+            pub const INDEX: u16 = $index;
+            pub static VARS: $crate::srdo::objects::CommuVars =
+                $crate::srdo::objects::CommuVars::new();
+            pub static DEFAULTS: $crate::srdo::objects::CommuDefaults =
+                $crate::srdo::objects::CommuDefaults::new($dir, $sct, $srvt, $cob1, $cob2);
+            pub static SUBS: [$crate::od::ObdSubEntry; $crate::srdo::objects::COMMU_SUBS] =
+                $crate::srdo::objects::commu_subs(&VARS, &DEFAULTS);
+        }
+    };
+}
+
+/// `OBD_BEGIN_SRDO_MAPP(ind, num, cnt)` ... `OBD_END_SRDO_MAPP(ind)`: the
+/// mapping parameter `$index` (0x1381..=0x13C0) in a module `$m`, with the
+/// listed default entries (sub 0 = their number).
+#[macro_export]
+macro_rules! obd_create_srdo_mapp {
+    ($vis:vis mod $m:ident, $index:expr, [$($entry:expr),* $(,)?]) => {
+        #[allow(missing_docs)]
+        $vis mod $m {
+            pub const INDEX: u16 = $index;
+            pub static VARS: $crate::srdo::objects::MappVars =
+                $crate::srdo::objects::MappVars::new();
+            pub static DEFAULTS: $crate::srdo::objects::MappDefaults =
+                $crate::srdo::objects::MappDefaults::new(&[$($entry),*]);
+            pub static SUBS: [$crate::od::ObdSubEntry; $crate::srdo::objects::MAPP_SUBS] =
+                $crate::srdo::objects::mapp_subs(&VARS, &DEFAULTS);
+        }
+    };
+}
+
+/// `OBD_CREATE_SRDO_CFG_VALID()`: object 0x13FE in a module `$m`.
+#[macro_export]
+macro_rules! obd_create_srdo_cfg_valid {
+    ($vis:vis mod $m:ident) => {
+        #[allow(missing_docs)]
+        $vis mod $m {
+            pub const INDEX: u16 = $crate::srdo::CONFIG_VALID_INDEX;
+            pub static VALUE: [::core::sync::atomic::AtomicU8; 1] = $crate::od::decl::zeroed();
+            pub static SUBS: [$crate::od::ObdSubEntry; 1] =
+                $crate::srdo::objects::cfg_valid_subs(&VALUE);
+        }
+    };
+}
+
+/// `OBD_BEGIN_SRDO_CRC(cnt)` ... `OBD_END_SRDO_CRC()`: object 0x13FF in a
+/// module `$m`, one entry per listed default CRC (sub n = SRDO 0x1300 + n,
+/// gaps included).
+#[macro_export]
+macro_rules! obd_create_srdo_crc {
+    ($vis:vis mod $m:ident, [$($crc:expr),* $(,)?]) => {
+        #[allow(missing_docs)]
+        $vis mod $m {
+            pub const INDEX: u16 = $crate::srdo::CRC_INDEX;
+            pub const COUNT: usize = [$($crc as u16),*].len();
+            pub static COUNT_VALUE: [u8; 1] = [COUNT as u8];
+            pub static VARS: [::core::sync::atomic::AtomicU8; 2 * COUNT] =
+                $crate::od::decl::zeroed();
+            pub static DEFAULTS: [u8; 2 * COUNT] =
+                $crate::srdo::objects::crc_defaults::<{ 2 * COUNT }>(&[$($crc),*]);
+            pub static SUBS: [$crate::od::ObdSubEntry; COUNT + 1] =
+                $crate::srdo::objects::crc_subs::<{ COUNT + 1 }>(&COUNT_VALUE, &VARS, &DEFAULTS);
+        }
+    };
+}
+
+/// The `ObdEntry` of a module declared by one of the SRDO macros.
+#[macro_export]
+macro_rules! srdo_obd_entry {
+    ($m:path) => {{
+        use $m as m;
+        $crate::od::ObdEntry::new(m::INDEX, &m::SUBS, None)
+    }};
+}

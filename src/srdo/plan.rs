@@ -1,0 +1,285 @@
+//! Copy plans: how the data of an SRDO move between its two frames and the
+//! mapped variables.
+//!
+//! A plan is built once, when the node enters OPERATIONAL with a valid
+//! configuration (the mapping cannot change while OPERATIONAL), so frame
+//! processing never searches the dictionary.
+//!
+//! * Dynamic mapping: one reference to the subindex description of each
+//!   mapped object, its array element and its wire length. Variables are
+//!   kept in CPU byte order, so each value is converted between the
+//!   little-endian frame and the variable (and sign-extended where the
+//!   variable is wider than the mapped type).
+//! * Static mapping (`SRDO_USE_STATIC_MAPPING`): the two contiguous
+//!   variable fields of `CcmStaticDefineSrdoVarFields`; frame bytes are
+//!   copied to and from them unchanged (manual 2.6 and 2.8.7).
+
+use core::sync::atomic::{AtomicU8, Ordering};
+
+#[cfg(not(srdo_static_mapping))]
+use crate::config::SRDO_MAX_MAPPENTRIES;
+#[cfg(not(srdo_static_mapping))]
+use crate::od::{ObdSubEntry, ObjectDictionary, Storage};
+use crate::wire::srdo::payload_mask;
+
+#[cfg(not(srdo_static_mapping))]
+use super::{MAPP_OFFSET, MappingEntry, read_u8, read_u32};
+
+/// Marks a signed entry in [`Plan::meta`] (low nibble: wire bytes).
+#[cfg(not(srdo_static_mapping))]
+const META_SIGNED: u8 = 0x80;
+
+/// The copy plan of one SRDO with dynamic mapping.
+#[cfg(not(srdo_static_mapping))]
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Plan {
+    /// Subindex description of each entry in mapping order (normal,
+    /// inverted, normal, ...); `None` for a dummy entry.
+    desc: [Option<&'static ObdSubEntry>; SRDO_MAX_MAPPENTRIES],
+    /// Array element of each entry (0 for plain subindices).
+    element: [u8; SRDO_MAX_MAPPENTRIES],
+    /// Wire bytes (low nibble) and [`META_SIGNED`].
+    meta: [u8; SRDO_MAX_MAPPENTRIES],
+    /// Number of entries.
+    count: u8,
+}
+
+#[cfg(not(srdo_static_mapping))]
+impl Plan {
+    /// An empty plan.
+    pub(crate) const EMPTY: Plan = Plan {
+        desc: [None; SRDO_MAX_MAPPENTRIES],
+        element: [0; SRDO_MAX_MAPPENTRIES],
+        meta: [0; SRDO_MAX_MAPPENTRIES],
+        count: 0,
+    };
+
+    /// Builds the plan of an SRDO whose configuration passed the check.
+    /// `None` when an object cannot be resolved (then the SRDO does not run).
+    pub(crate) fn build(od: &ObjectDictionary, commu_index: u16) -> Option<Plan> {
+        let mapp_index = commu_index + MAPP_OFFSET;
+        let count = read_u8(od, mapp_index, 0)?;
+        let mut plan = Plan::EMPTY;
+        for i in 0..usize::from(count) {
+            let sub = u8::try_from(i + 1).ok()?;
+            let entry = MappingEntry::decode(read_u32(od, mapp_index, sub)?);
+            let wire = entry.bits / 8;
+            let (desc, element, signed) = if entry.dummy_bits().is_some() {
+                (None, 0, false)
+            } else {
+                let obj = od.find(entry.index, entry.sub).ok()?;
+                let element = obj.sub().checked_sub(obj.desc().sub())?;
+                (Some(obj.desc()), element, obj.data_type().is_signed())
+            };
+            *plan.desc.get_mut(i)? = desc;
+            *plan.element.get_mut(i)? = element;
+            *plan.meta.get_mut(i)? = (wire & 0x0F) | if signed { META_SIGNED } else { 0 };
+        }
+        plan.count = count;
+        Some(plan)
+    }
+
+    /// Resolves the variable of every entry. `None` when a variable has
+    /// gone (a USERDEF variable detached while OPERATIONAL).
+    #[inline]
+    fn resolve(&self) -> Option<[Option<&'static [AtomicU8]>; SRDO_MAX_MAPPENTRIES]> {
+        let mut vars = [None; SRDO_MAX_MAPPENTRIES];
+        for ((v, desc), element) in vars
+            .iter_mut()
+            .zip(&self.desc)
+            .zip(&self.element)
+            .take(usize::from(self.count))
+        {
+            if let Some(d) = desc {
+                *v = Some(match d.storage(usize::from(*element))? {
+                    Storage::Ram(m) => m,
+                    Storage::Var(e) => e.data()?,
+                    _ => return None,
+                });
+            }
+        }
+        Some(vars)
+    }
+
+    /// Reads the normal and the inverted data from the mapped variables
+    /// (frame layout, little-endian). `None` when a variable is missing.
+    pub(crate) fn gather(&self) -> Option<(u64, u64)> {
+        let vars = self.resolve()?;
+        let mut data = [0u64; 2];
+        let mut offset = 0u32;
+        for (i, (var, meta)) in vars
+            .iter()
+            .zip(&self.meta)
+            .take(usize::from(self.count))
+            .enumerate()
+        {
+            let wire = *meta & 0x0F;
+            let value = var.map_or(0, load_native) & payload_mask(wire);
+            if let Some(d) = data.get_mut(i % 2) {
+                *d |= value.checked_shl(offset).unwrap_or(0);
+            }
+            if i % 2 == 1 {
+                offset += 8 * u32::from(wire);
+            }
+        }
+        let [normal, inverted] = data;
+        Some((normal, inverted))
+    }
+
+    /// Writes received normal and inverted data to the mapped variables.
+    /// Either every variable is written or, when one is missing, none.
+    pub(crate) fn scatter(&self, normal: u64, inverted: u64) -> bool {
+        let Some(vars) = self.resolve() else {
+            return false;
+        };
+        let data = [normal, inverted];
+        let mut offset = 0u32;
+        for (i, (var, meta)) in vars
+            .iter()
+            .zip(&self.meta)
+            .take(usize::from(self.count))
+            .enumerate()
+        {
+            let wire = *meta & 0x0F;
+            if let (Some(m), Some(d)) = (var, data.get(i % 2)) {
+                let mut value = d.checked_shr(offset).unwrap_or(0) & payload_mask(wire);
+                if *meta & META_SIGNED != 0 {
+                    value = crate::od::value::sign_extend(value, usize::from(wire));
+                }
+                store_native(m, value);
+            }
+            if i % 2 == 1 {
+                offset += 8 * u32::from(wire);
+            }
+        }
+        true
+    }
+}
+
+/// Reads a variable of 1, 2, 4 or 8 bytes in CPU byte order as an integer.
+#[cfg(not(srdo_static_mapping))]
+#[inline]
+fn load_native(m: &[AtomicU8]) -> u64 {
+    let n = m.len();
+    let mut v = 0u64;
+    for (i, b) in m.iter().enumerate() {
+        let pos = if cfg!(target_endian = "little") {
+            i
+        } else {
+            n - 1 - i
+        };
+        v |= u64::from(b.load(Ordering::Relaxed))
+            .checked_shl(8 * pos as u32)
+            .unwrap_or(0);
+    }
+    v
+}
+
+/// Writes an integer into a variable of 1, 2, 4 or 8 bytes in CPU order.
+#[cfg(not(srdo_static_mapping))]
+#[inline]
+fn store_native(m: &[AtomicU8], v: u64) {
+    let n = m.len();
+    for (i, b) in m.iter().enumerate() {
+        let pos = if cfg!(target_endian = "little") {
+            i
+        } else {
+            n - 1 - i
+        };
+        b.store(
+            v.checked_shr(8 * pos as u32).unwrap_or(0) as u8,
+            Ordering::Relaxed,
+        );
+    }
+}
+
+/// The variable fields of one SRDO with static mapping: `len` bytes of
+/// normal and of inverted data, in frame order.
+#[cfg(srdo_static_mapping)]
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Fields {
+    pub normal: &'static [AtomicU8],
+    pub inverted: &'static [AtomicU8],
+}
+
+#[cfg(srdo_static_mapping)]
+impl Fields {
+    /// The two fields as frame data (little-endian `u64`).
+    pub(crate) fn gather(&self) -> Option<(u64, u64)> {
+        Some((load_bytes(self.normal), load_bytes(self.inverted)))
+    }
+
+    /// Copies received frame data into the two fields.
+    pub(crate) fn scatter(&self, normal: u64, inverted: u64) -> bool {
+        store_bytes(self.normal, normal);
+        store_bytes(self.inverted, inverted);
+        true
+    }
+}
+
+/// Frame bytes from a field, unchanged (byte 0 of the field is byte 0 of
+/// the frame).
+#[cfg(srdo_static_mapping)]
+#[inline]
+fn load_bytes(field: &[AtomicU8]) -> u64 {
+    let mut v = 0u64;
+    for (i, b) in field.iter().take(8).enumerate() {
+        v |= u64::from(b.load(Ordering::Relaxed)) << (8 * i as u32);
+    }
+    v & payload_mask(field.len() as u8)
+}
+
+/// Frame bytes into a field, unchanged.
+#[cfg(srdo_static_mapping)]
+#[inline]
+fn store_bytes(field: &[AtomicU8], v: u64) {
+    for (i, b) in field.iter().take(8).enumerate() {
+        b.store((v >> (8 * i as u32)) as u8, Ordering::Relaxed);
+    }
+}
+
+/// Checks that every mapped object of an SRDO (static mapping) is the
+/// variable at its byte offset in the normal or inverted field: same start
+/// address, same size. Dummy entries have no variable and are skipped.
+#[cfg(srdo_static_mapping)]
+pub(crate) fn match_fields(
+    od: &crate::od::ObjectDictionary,
+    commu_index: u16,
+    normal: &'static [AtomicU8],
+    inverted: &'static [AtomicU8],
+) -> Result<(), crate::error::CopKernel> {
+    use super::{MAPP_OFFSET, MappingEntry, read_u8, read_u32};
+    use crate::config::SRDO_MAX_MAPPENTRIES;
+    use crate::error::CopKernel;
+    use crate::od::Storage;
+    let bad = CopKernel::SrdoErrorMapp;
+    let mapp_index = commu_index + MAPP_OFFSET;
+    let count = read_u8(od, mapp_index, 0).ok_or(bad)?;
+    if count % 2 != 0 || usize::from(count) > SRDO_MAX_MAPPENTRIES {
+        return Err(bad);
+    }
+    let mut offset = 0usize;
+    for sub in 1..=count {
+        let e = MappingEntry::decode(read_u32(od, mapp_index, sub).ok_or(bad)?);
+        if e.bits % 8 != 0 {
+            return Err(bad);
+        }
+        let len = usize::from(e.bits / 8);
+        if e.dummy_bits().is_none() {
+            let field = if sub % 2 == 1 { normal } else { inverted };
+            let var = match od.find(e.index, e.sub).and_then(|o| o.storage()) {
+                Ok(Storage::Ram(m)) => m,
+                Ok(Storage::Var(v)) => v.data().ok_or(bad)?,
+                _ => return Err(bad),
+            };
+            let expected = field.get(offset..offset + len).ok_or(bad)?;
+            if var.len() != len || !core::ptr::eq(var.as_ptr(), expected.as_ptr()) {
+                return Err(bad);
+            }
+        }
+        if sub % 2 == 0 {
+            offset += len;
+        }
+    }
+    Ok(())
+}

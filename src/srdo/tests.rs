@@ -1,0 +1,747 @@
+//! Unit tests of the SRDO module on a small Rust dictionary. Whole-stack
+//! scenarios on the simulated bus are in `tests/srdo_*.rs`.
+
+use core::sync::atomic::AtomicU8;
+
+use super::*;
+use crate::event::QUEUE_CAPACITY;
+use crate::od::{Access, DataType, ObdEntry, ObdSubEntry, decl};
+use crate::port::{CanFrame, CanId};
+
+static NORMAL: [AtomicU8; 8] = decl::zeroed();
+static INVERTED: [AtomicU8; 8] = decl::zeroed();
+static RO_VAR: [AtomicU8; 2] = decl::zeroed();
+static NOMAP_VAR: [AtomicU8; 2] = decl::zeroed();
+static U32_VAR: [AtomicU8; 4] = decl::zeroed();
+static U32_VAR_I: [AtomicU8; 4] = decl::zeroed();
+static WIDE_N: [AtomicU8; 4] = decl::zeroed();
+static WIDE_I: [AtomicU8; 4] = decl::zeroed();
+
+const fn part(buf: &'static [AtomicU8], from: usize, len: usize) -> &'static [AtomicU8] {
+    buf.split_at(from).1.split_at(len).0
+}
+
+const fn u8_var(sub: u8, buf: &'static [AtomicU8], at: usize) -> ObdSubEntry {
+    ObdSubEntry::ram(
+        sub,
+        DataType::UInt8,
+        Access::PRW,
+        part(buf, at, 1),
+        Some(&[0]),
+    )
+}
+
+const fn u16_var(sub: u8, buf: &'static [AtomicU8], at: usize) -> ObdSubEntry {
+    ObdSubEntry::ram(
+        sub,
+        DataType::UInt16,
+        Access::PRW,
+        part(buf, at, 2),
+        Some(&[0, 0]),
+    )
+}
+
+static S6200: [ObdSubEntry; 5] = [
+    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[4]),
+    u8_var(1, &NORMAL, 0),
+    u8_var(2, &NORMAL, 1),
+    u8_var(3, &NORMAL, 2),
+    u8_var(4, &NORMAL, 3),
+];
+static S6201: [ObdSubEntry; 3] = [
+    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[2]),
+    u16_var(1, &NORMAL, 4),
+    u16_var(2, &NORMAL, 6),
+];
+static S6300: [ObdSubEntry; 5] = [
+    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[4]),
+    u8_var(1, &INVERTED, 0),
+    u8_var(2, &INVERTED, 1),
+    u8_var(3, &INVERTED, 2),
+    u8_var(4, &INVERTED, 3),
+];
+static S6301: [ObdSubEntry; 3] = [
+    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[2]),
+    u16_var(1, &INVERTED, 4),
+    u16_var(2, &INVERTED, 6),
+];
+static S6400: [ObdSubEntry; 5] = [
+    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[4]),
+    ObdSubEntry::ram(1, DataType::UInt16, Access::PR, &RO_VAR, Some(&[0, 0])),
+    ObdSubEntry::ram(2, DataType::UInt16, Access::RW, &NOMAP_VAR, Some(&[0, 0])),
+    ObdSubEntry::ram(3, DataType::UInt32, Access::PRW, &U32_VAR, Some(&[0; 4])),
+    ObdSubEntry::ram(4, DataType::UInt32, Access::PRW, &U32_VAR_I, Some(&[0; 4])),
+];
+static S6500: [ObdSubEntry; 3] = [
+    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[2]),
+    ObdSubEntry::ram(1, DataType::Int24, Access::PRW, &WIDE_N, Some(&[0; 4])),
+    ObdSubEntry::ram(2, DataType::Int24, Access::PRW, &WIDE_I, Some(&[0; 4])),
+];
+
+// The mappings of the three SRDOs are those of SAFETY_BEHAVIOUR.md
+// section 3, so that the CRC vectors hold with static mapping too.
+crate::obd_create_srdo_gfc_param!(mod gfc);
+crate::obd_create_srdo_commu!(mod c1, 0x1301, 0, 25, 20, 0x101, 0x102);
+crate::obd_create_srdo_commu!(mod c2, 0x1302, 0, 25, 20, 0x103, 0x104);
+crate::obd_create_srdo_commu!(mod c3, 0x1303, 0, 25, 20, 0x105, 0x106);
+crate::obd_create_srdo_mapp!(mod m1, 0x1381, [0x6200_0108, 0x6200_0208]);
+crate::obd_create_srdo_mapp!(
+    mod m2,
+    0x1382,
+    [0x6200_0108, 0x6200_0208, 0x6200_0308, 0x6200_0408]
+);
+crate::obd_create_srdo_mapp!(
+    mod m3,
+    0x1383,
+    [0x6300_0110, 0x6300_0210, 0x6200_0108, 0x6200_0208]
+);
+crate::obd_create_srdo_cfg_valid!(mod cfg_valid);
+crate::obd_create_srdo_crc!(mod crcs, [0, 0, 0]);
+
+static GENERIC: [ObdEntry; 9] = [
+    crate::srdo_obd_entry!(gfc),
+    crate::srdo_obd_entry!(c1),
+    crate::srdo_obd_entry!(c2),
+    crate::srdo_obd_entry!(c3),
+    crate::srdo_obd_entry!(m1),
+    crate::srdo_obd_entry!(m2),
+    crate::srdo_obd_entry!(m3),
+    crate::srdo_obd_entry!(cfg_valid),
+    crate::srdo_obd_entry!(crcs),
+];
+static DEVICE: [ObdEntry; 6] = [
+    ObdEntry::new(0x6200, &S6200, None),
+    ObdEntry::new(0x6201, &S6201, None),
+    ObdEntry::new(0x6300, &S6300, None),
+    ObdEntry::new(0x6301, &S6301, None),
+    ObdEntry::new(0x6400, &S6400, None),
+    ObdEntry::new(0x6500, &S6500, None),
+];
+
+// A dictionary with a gap: SRDO 1 and 3, no SRDO 2.
+crate::obd_create_srdo_commu!(mod g1, 0x1301, 0, 25, 20, 0x101, 0x102);
+crate::obd_create_srdo_commu!(mod g3, 0x1303, 0, 25, 20, 0x105, 0x106);
+crate::obd_create_srdo_mapp!(mod gm1, 0x1381, []);
+crate::obd_create_srdo_mapp!(mod gm3, 0x1383, []);
+crate::obd_create_srdo_cfg_valid!(mod g_cfg_valid);
+crate::obd_create_srdo_crc!(mod g_crcs, [0, 0, 0]);
+static GAPPED: [ObdEntry; 6] = [
+    crate::srdo_obd_entry!(g1),
+    crate::srdo_obd_entry!(g3),
+    crate::srdo_obd_entry!(gm1),
+    crate::srdo_obd_entry!(gm3),
+    crate::srdo_obd_entry!(g_cfg_valid),
+    crate::srdo_obd_entry!(g_crcs),
+];
+static NO_CFG_VALID: [ObdEntry; 2] = [crate::srdo_obd_entry!(g1), crate::srdo_obd_entry!(gm1)];
+
+/// The dictionaries' variables are statics shared by all tests here; each
+/// test holds this lock.
+static SERIAL: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+fn setup() -> (std::sync::MutexGuard<'static, ()>, ObjectDictionary, Srdo) {
+    let guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let od = ObjectDictionary::new(&GENERIC, &[], &DEVICE).unwrap();
+    od.restore_defaults(0x1000, 0x9FFF);
+    let mut srdo = Srdo::new();
+    srdo.init(&od).unwrap();
+    (guard, od, srdo)
+}
+
+fn set(od: &ObjectDictionary, index: u16, sub: u8, v: u64) {
+    od.poke_uint(index, sub, v).unwrap();
+}
+
+fn get(od: &ObjectDictionary, index: u16, sub: u8) -> u64 {
+    od.read_uint(index, sub).unwrap()
+}
+
+/// Writes every SRDO's CRC into 0x13FF and declares the configuration valid.
+fn seal(od: &ObjectDictionary, srdo: &Srdo) {
+    for idx in srdo.commu_indices() {
+        let crc = srdo.calc_crc(od, idx).unwrap();
+        set(od, CRC_INDEX, (idx - COMMU_BASE) as u8, u64::from(crc));
+    }
+    set(od, CONFIG_VALID_INDEX, 0, u64::from(CONFIG_VALID));
+}
+
+/// Runs the queue like the stack does; `handler` plays the application
+/// and returns the status byte to set in response to an event (or `None`).
+fn run(
+    srdo: &mut Srdo,
+    q: &mut ActionQueue,
+    mut handler: impl FnMut(&Srdo, &Event) -> Option<(u16, u8)>,
+) -> Vec<Event> {
+    let mut out = Vec::new();
+    while let Some(a) = q.pop() {
+        match a {
+            Action::Emit(e) => {
+                if let Some((idx, st)) = handler(srdo, &e) {
+                    srdo.set_state(idx, st).unwrap();
+                }
+                out.push(e);
+            }
+            Action::Do(Internal::SrdoCheckHandled(slot)) => srdo.check_handled(slot, q),
+            Action::Do(other) => panic!("unexpected internal action {other:?}"),
+        }
+    }
+    out
+}
+
+/// The application of manual 2.9.1 / 2.9.2: on success sets bits 4-5 to
+/// 11, on error (bits 4-5 = 01) sets 11 and toggles bits 6-7 (01 -> 10).
+fn manual_app(srdo: &Srdo, e: &Event) -> Option<(u16, u8)> {
+    match *e {
+        Event::SrdoEvent(idx) => Some((idx, srdo.get_state(idx).unwrap() | 0x30)),
+        Event::SrdoError(idx, code) if code != CopKernel::SrdoNotHandledInApp => {
+            let st = srdo.get_state(idx).unwrap();
+            assert_eq!(st & 0x30, 0x10, "inside AppSrdoError bits 4-5 are 01");
+            assert_eq!(st & 0xC0, 0x40, "inside AppSrdoError bits 6-7 are 01");
+            Some((idx, (st | 0x30) ^ 0xC0))
+        }
+        _ => None,
+    }
+}
+
+fn pm(e: ProgMonEvent) -> Vec<Event> {
+    if SRDO_USE_PROGMONITOR {
+        vec![Event::ProgMon(e)]
+    } else {
+        vec![]
+    }
+}
+
+fn rx(id: u16, data: &[u8], t: u32) -> RxFrame {
+    RxFrame {
+        frame: CanFrame::new(CanId::std_masked(id), data),
+        time: Ticks(t),
+    }
+}
+
+#[test]
+fn per_srdo_state_fits_64_bytes() {
+    // Performance goal: at most 64 bytes of run-time state per SRDO.
+    assert!(
+        core::mem::size_of::<Slot>() <= 64,
+        "Slot is {} bytes",
+        core::mem::size_of::<Slot>()
+    );
+}
+
+#[test]
+fn crc_vectors_through_calc_crc() {
+    // Source: SAFETY_BEHAVIOUR.md section 3, table of public test vectors;
+    // each row set up in the dictionary and computed by CcmCalcSrdoCrc.
+    let (_g, od, srdo) = setup();
+    let rows: [(u16, u8, u16); 5] = [
+        (0x1301, 1, 0xD879),
+        (0x1301, 2, 0x7764),
+        (0x1302, 1, 0xE57E),
+        (0x1303, 1, 0x25EA),
+        (0x1303, 2, 0xA3AF),
+    ];
+    for (idx, dir, expected) in rows {
+        set(&od, idx, 1, u64::from(dir));
+        set(&od, idx, 2, 25);
+        set(&od, idx, 3, 20);
+        set(&od, idx, 5, 0x101);
+        set(&od, idx, 6, 0x102);
+        assert_eq!(
+            srdo.calc_crc(&od, idx),
+            Ok(expected),
+            "SRDO {idx:#x} direction {dir}"
+        );
+    }
+    // The transmission type is not part of the CRC and SRDOs with direction
+    // 0 are computed too (manual 2.8.8).
+    set(&od, 0x1301, 1, 0);
+    assert_ne!(srdo.calc_crc(&od, 0x1301), Ok(0xD879));
+    assert_eq!(srdo.calc_crc(&od, 0x1304), Err(CopKernel::SrdoNotExist));
+}
+
+#[test]
+fn crc_byte_stream_of_row_1() {
+    // Source: SAFETY_BEHAVIOUR.md section 3, "Byte stream of the first row".
+    let (_g, od, _srdo) = setup();
+    set(&od, 0x1301, 1, 1);
+    set(&od, 0x1301, 2, 25);
+    set(&od, 0x1301, 3, 20);
+    set(&od, 0x1301, 5, 0x101);
+    set(&od, 0x1301, 6, 0x102);
+    let mut buf = [0u8; crc::MAX_STREAM];
+    let n = crc::stream_bytes(&od, 0x1301, &mut buf).unwrap();
+    assert_eq!(
+        &buf[..n],
+        &[
+            0x01, 0x19, 0x00, 0x14, 0x01, 0x01, 0x00, 0x00, 0x02, 0x01, 0x00, 0x00, 0x02, 0x01,
+            0x08, 0x01, 0x00, 0x62, 0x02, 0x08, 0x02, 0x00, 0x62
+        ]
+    );
+    assert_eq!(crc16(&buf[..n]), 0xD879);
+    // Sanity value of the same section.
+    assert_eq!(crc16(b"123456789"), 0x31C3);
+}
+
+#[test]
+fn init_finds_objects_and_refuses_bad_tables() {
+    let (_g, od, srdo) = setup();
+    assert_eq!(srdo.count(), 3);
+    assert_eq!(
+        srdo.commu_indices().collect::<Vec<_>>(),
+        [0x1301, 0x1302, 0x1303]
+    );
+    let gapped = ObjectDictionary::new(&GAPPED, &[], &[]).unwrap();
+    let mut s = Srdo::new();
+    assert_eq!(
+        s.discover(&gapped, 64, false),
+        Err(CopKernel::SrdoNotExist),
+        "gap refused while SRDO_ALLOW_GAPS_IN_OD is FALSE"
+    );
+    assert_eq!(s.discover(&gapped, 64, true), Ok(()));
+    assert_eq!(s.commu_indices().collect::<Vec<_>>(), [0x1301, 0x1303]);
+    assert_eq!(s.get_state(0x1302), Err(CopKernel::SrdoNotExist));
+    assert_eq!(s.get_state(0x1303), Ok(0));
+    assert_eq!(
+        s.init(&gapped).is_ok(),
+        crate::config::SRDO_ALLOW_GAPS_IN_OD,
+        "init follows the build switch"
+    );
+    assert_eq!(
+        s.discover(&od, 2, false),
+        Err(CopKernel::NoResource),
+        "more SRDOs than SRDO_MAX_SRDO_IN_OBD"
+    );
+    let no_cfg = ObjectDictionary::new(&NO_CFG_VALID, &[], &[]).unwrap();
+    assert_eq!(
+        s.discover(&no_cfg, 64, false),
+        Err(CopKernel::ObdIndexNotExist),
+        "0x13FF / 0x13FE missing"
+    );
+}
+
+#[test]
+fn state_byte_api() {
+    let (_g, _od, mut srdo) = setup();
+    assert_eq!(srdo.get_state(0x1301), Ok(0));
+    srdo.set_state(0x1301, 0xBF).unwrap();
+    assert_eq!(
+        srdo.get_state(0x1301),
+        Ok(0xB0),
+        "bits 0-3 stay reserved (0)"
+    );
+    for bad in [0x0000, 0x1300, 0x1304, 0x1340, 0x1381, 0xFFFF] {
+        assert_eq!(srdo.get_state(bad), Err(CopKernel::SrdoNotExist));
+        assert_eq!(srdo.set_state(bad, 0), Err(CopKernel::SrdoNotExist));
+    }
+}
+
+#[test]
+fn commu_param_and_mapped_len() {
+    let (_g, od, srdo) = setup();
+    set(&od, 0x1302, 1, 2);
+    set(&od, 0x1302, 2, 40);
+    assert_eq!(
+        srdo.commu_param(&od, 0x1302),
+        Ok(CommuParam {
+            direction: 2,
+            sct_ms: 40
+        })
+    );
+    assert_eq!(srdo.mapped_len(&od, 0x1301), Ok(1));
+    assert_eq!(srdo.mapped_len(&od, 0x1302), Ok(2));
+    assert_eq!(srdo.mapped_len(&od, 0x1303), Ok(3));
+    assert_eq!(srdo.commu_param(&od, 0x1305), Err(CopKernel::SrdoNotExist));
+    set(&od, 0x1301, 1, 1);
+    set(&od, 0x1303, 1, 1);
+    assert_eq!(
+        srdo.transmit_indices(&od).collect::<Vec<_>>(),
+        [0x1301, 0x1303]
+    );
+}
+
+#[test]
+fn mapping_entry_format() {
+    // Manual table 4: 0x20000310 = UNSIGNED16 at index 0x2000 sub 3.
+    let e = MappingEntry::decode(0x2000_0310);
+    assert_eq!(
+        e,
+        MappingEntry {
+            index: 0x2000,
+            sub: 3,
+            bits: 16
+        }
+    );
+    assert_eq!(e.encode(), 0x2000_0310);
+    assert_eq!(MappingEntry::decode(0x0005_0008).dummy_bits(), Some(8));
+    assert_eq!(MappingEntry::decode(0x0007_0020).dummy_bits(), Some(32));
+    assert_eq!(e.dummy_bits(), None);
+}
+
+/// Object writes of a test case: (index, subindex, value).
+#[cfg(not(srdo_static_mapping))]
+type Writes = &'static [(u16, u8, u64)];
+/// Frames of a test case: (COB-ID, data, receive tick).
+#[cfg(not(srdo_static_mapping))]
+type Frames = &'static [(u16, &'static [u8], u32)];
+
+/// Tests that rewrite mappings (dynamic mapping only).
+#[cfg(not(srdo_static_mapping))]
+mod dynamic {
+    use super::*;
+
+    /// SRDO 0x1301: receive, SCT 25 ms, SRVT 20 ms, COB-IDs 0x101/0x102,
+    /// normal 0x6201 sub 1 (U16), inverted 0x6301 sub 1 (U16); DLC 2.
+    /// The other SRDOs are off.
+    fn receive_config(od: &ObjectDictionary, srdo: &Srdo) {
+        set(od, 0x1301, 1, 2);
+        set(od, 0x1381, 0, 2);
+        set(od, 0x1381, 1, 0x6201_0110);
+        set(od, 0x1381, 2, 0x6301_0110);
+        seal(od, srdo);
+    }
+
+    fn operational(od: &ObjectDictionary, srdo: &mut Srdo, now: u32) {
+        srdo.on_state(od, NmtState::Operational, 5, Ticks(now));
+        assert!(srdo.is_running());
+    }
+
+    #[test]
+    fn configuration_check_codes_in_order() {
+        let (_g, od, srdo) = setup();
+        receive_config(&od, &srdo);
+        assert_eq!(srdo.check_config(&od), Ok(()));
+
+        // CRC first: a changed parameter without a new CRC.
+        set(&od, 0x1301, 3, 21);
+        assert_eq!(
+            srdo.check_config(&od),
+            Err((CopKernel::SrdoCfgCrcError, 0x1301))
+        );
+        set(&od, 0x1301, 3, 20);
+        assert_eq!(srdo.check_config(&od), Ok(()));
+
+        // Disabled SRDOs are CRC-checked too, and the first bad SRDO is named.
+        set(&od, 0x1303, 2, 26);
+        assert_eq!(
+            srdo.check_config(&od),
+            Err((CopKernel::SrdoCfgCrcError, 0x1303))
+        );
+        set(&od, 0x1303, 2, 25);
+
+        let cases: &[(Writes, CopKernel)] = &[
+            (&[(0x1301, 1, 3)], CopKernel::SrdoInvalidCfg),
+            (&[(0x1301, 2, 0)], CopKernel::SrdoCfgTimingError),
+            (&[(0x1301, 3, 0)], CopKernel::SrdoCfgTimingError),
+            (&[(0x1301, 2, 19)], CopKernel::SrdoCfgTimingError),
+            (
+                &[(0x1301, 5, 0x102), (0x1301, 6, 0x103)],
+                CopKernel::SrdoCfgIdError,
+            ),
+            (
+                &[(0x1301, 5, 0x181), (0x1301, 6, 0x182)],
+                CopKernel::SrdoCfgIdError,
+            ),
+            (&[(0x1301, 6, 0x104)], CopKernel::SrdoCfgIdError),
+            (&[(0x1381, 0, 1)], CopKernel::SrdoErrorMapp),
+            (&[(0x1381, 0, 0)], CopKernel::SrdoErrorMapp),
+            (&[(0x1381, 2, 0x6300_0108)], CopKernel::SrdoErrorMapp),
+            (&[(0x1381, 1, 0x6202_0110)], CopKernel::SrdoErrorMapp),
+            (&[(0x1381, 1, 0x6201_0310)], CopKernel::SrdoErrorMapp),
+            (
+                &[(0x1381, 1, 0x6400_0110), (0x1381, 2, 0x6301_0110)],
+                CopKernel::SrdoErrorMapp,
+            ),
+            (&[(0x1381, 1, 0x6400_0210)], CopKernel::SrdoErrorMapp),
+            (
+                &[(0x1381, 1, 0x6400_0320), (0x1381, 2, 0x6301_0120)],
+                CopKernel::SrdoErrorMapp,
+            ),
+            (
+                &[(0x1381, 1, 0x0006_0010), (0x1381, 2, 0x0006_0010)],
+                if crate::config::SRDO_USE_DUMMY_MAPPING {
+                    CopKernel::Successful
+                } else {
+                    CopKernel::SrdoErrorMapp
+                },
+            ),
+            (
+                &[
+                    (0x1381, 0, 6),
+                    (0x1381, 3, 0x6400_0320),
+                    (0x1381, 4, 0x6400_0420),
+                    (0x1381, 5, 0x6500_0118),
+                    (0x1381, 6, 0x6500_0218),
+                ],
+                CopKernel::SrdoLengthExceeded,
+            ),
+        ];
+        for (writes, code) in cases {
+            od.restore_defaults(0x1000, 0x1FFF);
+            receive_config(&od, &srdo);
+            for (i, s, v) in writes.iter().copied() {
+                set(&od, i, s, v);
+            }
+            seal(&od, &srdo);
+            let expected = if *code == CopKernel::Successful {
+                Ok(())
+            } else {
+                Err((*code, 0x1301))
+            };
+            assert_eq!(srdo.check_config(&od), expected, "after {writes:x?}");
+        }
+    }
+
+    #[test]
+    fn duplicate_cob_ids_and_granularity() {
+        let (_g, od, srdo) = setup();
+        receive_config(&od, &srdo);
+        // SRDO 0x1302 transmits 0x6200 sub 1/2 (U8) on the same COB-IDs.
+        set(&od, 0x1302, 1, 1);
+        set(&od, 0x1302, 5, 0x101);
+        set(&od, 0x1302, 6, 0x102);
+        set(&od, 0x1382, 0, 2);
+        seal(&od, &srdo);
+        assert_eq!(
+            srdo.check_config_with(&od, 8),
+            Err((CopKernel::SrdoCanIdAlreadyInUse, 0x1302)),
+            "the later SRDO is the bad one"
+        );
+        set(&od, 0x1302, 5, 0x103);
+        set(&od, 0x1302, 6, 0x104);
+        seal(&od, &srdo);
+        assert_eq!(srdo.check_config_with(&od, 8), Ok(()));
+        // 8-bit objects at granularity 16 (SRDO_GRANULARITY, manual 2.4).
+        assert_eq!(
+            srdo.check_config_with(&od, 16),
+            Err((CopKernel::SrdoGranularityMismatch, 0x1302))
+        );
+        assert_eq!(
+            srdo.check_config(&od).is_ok(),
+            crate::config::SRDO_GRANULARITY == 8
+        );
+        // A disabled SRDO's COB-IDs do not count as used.
+        set(&od, 0x1302, 1, 0);
+        set(&od, 0x1302, 5, 0x101);
+        set(&od, 0x1302, 6, 0x102);
+        seal(&od, &srdo);
+        assert_eq!(srdo.check_config_with(&od, 8), Ok(()));
+    }
+
+    #[test]
+    fn mapp_param_reports_the_variables() {
+        let (_g, od, srdo) = setup();
+        receive_config(&od, &srdo);
+        let p = srdo.mapp_param(&od, 0x1301).unwrap();
+        assert_eq!(p.count, 2);
+        assert!(core::ptr::eq(
+            p.vars[0].unwrap().as_ptr(),
+            NORMAL[4..].as_ptr()
+        ));
+        assert!(core::ptr::eq(
+            p.vars[1].unwrap().as_ptr(),
+            INVERTED[4..].as_ptr()
+        ));
+        assert!(p.vars[2].is_none());
+    }
+
+    #[test]
+    fn valid_pair_writes_both_variables_and_reports() {
+        let (_g, od, mut srdo) = setup();
+        receive_config(&od, &srdo);
+        operational(&od, &mut srdo, 1000);
+        let mut q = ActionQueue::new();
+        assert!(srdo.on_frame(
+            &od,
+            NmtState::Operational,
+            &rx(0x101, &[0x34, 0x12], 1010),
+            &mut q
+        ));
+        assert!(q.is_empty(), "the first frame alone reports nothing");
+        assert!(srdo.on_frame(
+            &od,
+            NmtState::Operational,
+            &rx(0x102, &[0xCB, 0xED], 1011),
+            &mut q
+        ));
+        let ev = run(&mut srdo, &mut q, manual_app);
+        let mut expected = vec![Event::SrdoEvent(0x1301)];
+        expected.extend(pm(ProgMonEvent::SrdoReceived));
+        assert_eq!(ev, expected);
+        // CPU byte order in the variables, little-endian on the bus.
+        assert_eq!(get(&od, 0x6201, 1), 0x1234);
+        assert_eq!(get(&od, 0x6301, 1), 0xEDCB);
+        assert_eq!(srdo.get_state(0x1301), Ok(0x30), "set by the application");
+        // A frame of another id is not the module's.
+        assert!(!srdo.on_frame(
+            &od,
+            NmtState::Operational,
+            &rx(0x103, &[1, 2], 1012),
+            &mut q
+        ));
+    }
+
+    #[test]
+    fn errors_leave_variables_untouched_and_set_status() {
+        let (_g, od, mut srdo) = setup();
+        receive_config(&od, &srdo);
+        set(&od, 0x6201, 1, 0x5555);
+        set(&od, 0x6301, 1, 0xAAAA);
+        operational(&od, &mut srdo, 0);
+        let op = NmtState::Operational;
+        let cases: &[(Frames, CopKernel)] = &[
+            (&[(0x101, &[1], 10)], CopKernel::SrdoDlcNotValid),
+            (
+                &[(0x101, &[1, 2], 10), (0x102, &[0xFE], 11)],
+                CopKernel::SrdoDlcNotValid,
+            ),
+            (&[(0x102, &[0xFE, 0xFD], 10)], CopKernel::SrdoNotInOrder),
+            (
+                &[(0x101, &[1, 2], 10), (0x101, &[1, 2], 11)],
+                CopKernel::SrdoNotInOrder,
+            ),
+            (
+                &[(0x101, &[1, 2], 10), (0x102, &[0xFE, 0xFC], 11)],
+                CopKernel::SrdoDataError,
+            ),
+            (
+                &[(0x101, &[1, 2], 10), (0x102, &[0xFE, 0xFD], 211)],
+                CopKernel::SrdoSrvtTimeout,
+            ),
+        ];
+        for (frames, code) in cases {
+            srdo.on_state(&od, NmtState::PreOperational, 5, Ticks(0));
+            operational(&od, &mut srdo, 0);
+            let mut q = ActionQueue::new();
+            let mut events = Vec::new();
+            for (id, data, t) in frames.iter() {
+                srdo.on_frame(&od, op, &rx(*id, data, *t), &mut q);
+                assert!(q.len() <= 4 && q.len() < QUEUE_CAPACITY);
+                events.extend(run(&mut srdo, &mut q, |s, e| {
+                    if let Event::SrdoError(idx, _) = e {
+                        assert_eq!(s.get_state(*idx).unwrap() & 0xF0, 0x50);
+                    }
+                    None
+                }));
+            }
+            let mut expected = vec![
+                Event::SrdoError(0x1301, *code),
+                Event::SrdoError(0x1301, CopKernel::SrdoNotHandledInApp),
+            ];
+            expected.extend(pm(ProgMonEvent::SrdoError));
+            assert_eq!(events, expected, "{frames:x?}");
+            assert_eq!(srdo.get_state(0x1301), Ok(0x50));
+            assert_eq!(get(&od, 0x6201, 1), 0x5555, "normal variable untouched");
+            assert_eq!(get(&od, 0x6301, 1), 0xAAAA, "inverted variable untouched");
+        }
+    }
+
+    #[test]
+    fn srvt_boundary_and_sct_boundary() {
+        let (_g, od, mut srdo) = setup();
+        receive_config(&od, &srdo);
+        operational(&od, &mut srdo, 0);
+        // Delivers frames one by one like the stack (queue drained between).
+        let feed = |srdo: &mut Srdo, frames: &[(u16, [u8; 2], u32)]| {
+            let mut out = Vec::new();
+            for (id, data, t) in frames {
+                let mut q = ActionQueue::new();
+                srdo.on_frame(&od, NmtState::Operational, &rx(*id, data, *t), &mut q);
+                out.extend(run(srdo, &mut q, manual_app));
+            }
+            out
+        };
+        let mut ok = vec![Event::SrdoEvent(0x1301)];
+        ok.extend(pm(ProgMonEvent::SrdoReceived));
+        // Second frame exactly SRVT (20 ms = 200 ticks) after the first: valid.
+        let ev = feed(
+            &mut srdo,
+            &[(0x101, [1, 0], 100), (0x102, [0xFE, 0xFF], 300)],
+        );
+        assert_eq!(ev, ok);
+        // Next first frame exactly SCT (25 ms) after the previous first: valid.
+        let ev = feed(
+            &mut srdo,
+            &[(0x101, [2, 0], 350), (0x102, [0xFD, 0xFF], 351)],
+        );
+        assert_eq!(ev, ok);
+        // One tick later than SCT: SCT timeout before the frame is processed,
+        // then the pair itself is valid.
+        let ev = feed(
+            &mut srdo,
+            &[(0x101, [3, 0], 601), (0x102, [0xFC, 0xFF], 602)],
+        );
+        let mut expected = vec![Event::SrdoError(0x1301, CopKernel::SrdoSctTimeout)];
+        expected.extend(pm(ProgMonEvent::SrdoError));
+        expected.extend(ok.iter().copied());
+        assert_eq!(ev, expected);
+        // One tick past SRVT: timeout, nothing written.
+        let ev = feed(
+            &mut srdo,
+            &[(0x101, [4, 0], 700), (0x102, [0xFB, 0xFF], 901)],
+        );
+        assert_eq!(ev[0], Event::SrdoError(0x1301, CopKernel::SrdoSrvtTimeout));
+        assert_eq!(get(&od, 0x6201, 1), 3);
+        assert_eq!(get(&od, 0x6301, 1), 0xFFFC);
+    }
+
+    /// Runs the timer phase of one cycle with the SRVT switch given.
+    fn timers(srdo: &mut Srdo, now: u32, srvt_before_1st: bool) -> Vec<Event> {
+        srdo.begin_cycle();
+        let mut q = ActionQueue::new();
+        let mut out = Vec::new();
+        loop {
+            let done = srdo.poll_with(NmtState::Operational, Ticks(now), &mut q, srvt_before_1st);
+            assert!(q.len() <= 5, "one step queues at most five actions");
+            out.extend(run(srdo, &mut q, manual_app));
+            if done {
+                return out;
+            }
+        }
+    }
+
+    #[test]
+    fn srvt_checked_before_second_frame_both_settings() {
+        for switch in [false, true] {
+            let (_g, od, mut srdo) = setup();
+            receive_config(&od, &srdo);
+            operational(&od, &mut srdo, 0);
+            let mut q = ActionQueue::new();
+            srdo.on_frame(&od, NmtState::Operational, &rx(0x101, &[1, 0], 10), &mut q);
+            assert!(q.is_empty());
+            // At SRVT nothing happens with either setting.
+            let at = timers(&mut srdo, 210, switch);
+            assert!(
+                !at.iter().any(|e| matches!(e, Event::SrdoError(..))),
+                "{at:?}"
+            );
+            let ev = timers(&mut srdo, 211, switch);
+            let mut expected = vec![];
+            if switch {
+                expected.push(Event::SrdoError(0x1301, CopKernel::SrdoSrvtTimeout));
+                expected.extend(pm(ProgMonEvent::SrdoError));
+            }
+            expected.extend(pm(ProgMonEvent::SctChecked));
+            expected.extend(pm(ProgMonEvent::SctNotCheckedItIsInvalid));
+            expected.extend(pm(ProgMonEvent::SctNotCheckedItIsInvalid));
+            assert_eq!(ev, expected, "SRDO_CHECK_SRVT_BEFORE_1STRX = {switch}");
+            // With TRUE the half was dropped: its inverted frame is out of
+            // order; with FALSE the late frame gives SRVT timeout.
+            srdo.on_frame(
+                &od,
+                NmtState::Operational,
+                &rx(0x102, &[0xFE, 0xFF], 212),
+                &mut q,
+            );
+            let ev = run(&mut srdo, &mut q, manual_app);
+            let code = if switch {
+                CopKernel::SrdoNotInOrder
+            } else {
+                CopKernel::SrdoSrvtTimeout
+            };
+            assert_eq!(ev[0], Event::SrdoError(0x1301, code));
+            // SCT (250 ticks after entry) still expires once in both cases.
+            let ev = timers(&mut srdo, 251, switch);
+            assert_eq!(ev[0], Event::SrdoError(0x1301, CopKernel::SrdoSctTimeout));
+        }
+    }
+}
