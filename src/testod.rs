@@ -116,10 +116,7 @@ static S2006: [ObdSubEntry; 1] = [ObdSubEntry::var(
 )];
 static S2007: [ObdSubEntry; 2] = [
     ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[8]),
-    ObdSubEntry {
-        m_bAccess: Access::PRW.0 | Access::ARRAY,
-        ..ObdSubEntry::ram(1, DataType::UInt8, Access::PRW, &V2007, None)
-    },
+    ObdSubEntry::ram_array(1, DataType::UInt8, Access::PRW, &V2007, 1, Some(&[0])),
 ];
 static S2008: [ObdSubEntry; 1] = [ObdSubEntry::ram(
     0,

@@ -209,6 +209,30 @@ impl ObdSubEntry {
         e
     }
 
+    /// The element array of an array object (`OBD_ROM_INDEX_RAM_ARRAY`):
+    /// subindex `sub` (normally 1) addresses the first of the elements,
+    /// each `element_size` bytes; the object's subindex 0 must be a constant
+    /// equal to `elements.len() / element_size` (the number of elements).
+    /// A length that is not a multiple of `element_size` does not compile.
+    pub const fn ram_array(
+        sub: u8,
+        typ: DataType,
+        access: Access,
+        elements: &'static [AtomicU8],
+        element_size: usize,
+        default: Option<&'static [u8]>,
+    ) -> ObdSubEntry {
+        // Evaluated at compile time in a static: a misuse is a build error.
+        #[allow(clippy::panic)]
+        if element_size == 0 || elements.len() % element_size != 0 {
+            panic!("array length is not a multiple of the element size");
+        }
+        let mut e = Self::ram(sub, typ, access, elements, default);
+        e.m_bAccess |= Access::ARRAY;
+        e.m_dwSize = element_size as u32;
+        e
+    }
+
     /// A constant.
     pub const fn rom(sub: u8, typ: DataType, access: Access, value: &'static [u8]) -> ObdSubEntry {
         ObdSubEntry {
