@@ -3,5 +3,6 @@
 
 pub mod emcy;
 pub mod nmt;
+pub mod pdo;
 pub mod sdo;
 pub mod srdo;
