@@ -157,14 +157,21 @@ pub extern "C" fn CcmConnectToNet() -> tCopKernel {
 }
 
 /// `CcmProcess`: one processing cycle (received frames, SRDO checks,
-/// timers); the application's callbacks run inside this call.
+/// timers); the application's callbacks run inside this call. Returns
+/// kCopSuccessful, kCopIllegalInstance before `CcmInitCANopen`, or
+/// kCopSrdoNotHandledInApp when an SRDO error reported in this cycle was
+/// not acknowledged by `AppSrdoError` (manual 2.11.6; the application has
+/// also been told through `AppSrdoError` itself).
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmProcess() -> tCopKernel {
     let r = global::with(|i| i.stack.begin_cycle());
-    if r.is_ok() {
-        global::pump(|i, now| i.stack.poll(&mut i.port, now));
+    if r.is_err() {
+        return code(r.map(|()| Ok(())));
     }
-    code(r.map(|()| Ok(())))
+    if global::pump(|i, now| i.stack.poll(&mut i.port, now)) {
+        return CopKernel::SrdoNotHandledInApp.code();
+    }
+    CopKernel::Successful.code()
 }
 
 /// `CcmReadObject`: copies the value of an object (CPU byte order) into

@@ -84,6 +84,11 @@ fn slot() -> Option<&'static mut Option<Instance>> {
     all.get_mut(GLOBAL.current.get())
 }
 
+/// The instance the C API addresses (always 0 on a target).
+pub fn current() -> usize {
+    GLOBAL.current.get()
+}
+
 /// Selects the instance the C API addresses (host simulation only).
 /// Returns `false` for an index out of range or while the stack is busy.
 pub fn select(index: usize) -> bool {
@@ -219,16 +224,23 @@ pub fn report_error(code: CopKernel) {
 }
 
 /// Hands out events one at a time: `next` runs inside the stack and yields
-/// the next event; the callback runs outside.
-pub fn pump(mut next: impl FnMut(&mut Instance, crate::port::Ticks) -> Option<Event>) {
+/// the next event; the callback runs outside. Returns `true` when an SRDO
+/// error was reported as not handled by the application
+/// (kCopSrdoNotHandledInApp).
+pub fn pump(mut next: impl FnMut(&mut Instance, crate::port::Ticks) -> Option<Event>) -> bool {
+    let mut not_handled = false;
     loop {
         let now = TgtClock.now();
         let step = with(|i| next(i, now).map(|e| (e, i.callbacks)));
         match step {
-            Ok(Some((e, cbs))) => dispatch(e, cbs),
+            Ok(Some((e, cbs))) => {
+                not_handled |= matches!(e, Event::SrdoError(_, CopKernel::SrdoNotHandledInApp));
+                dispatch(e, cbs);
+            }
             _ => break,
         }
     }
+    not_handled
 }
 
 /// `CopSimSelectInstance`: host simulation only (`std` builds) — selects

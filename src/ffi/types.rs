@@ -341,6 +341,29 @@ impl tObdRamParam {
     }
 }
 
+/// `tSrdoTabParam` (manual 2.11.1); the table entries are private to the
+/// library, the pointer is kept opaque.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct tSrdoTabParam {
+    /// `tSrdoTabEntry MEM*` (opaque).
+    pub m_pSrdoTable: *mut c_void,
+    /// `tSrdoIndex` (a BYTE): number of entries.
+    pub m_SrdoCount: BYTE,
+}
+
+/// `tSrdoInitParam` (single instance, manual 2.11.1).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct tSrdoInitParam {
+    /// The SRDO table.
+    pub m_SrdoTabParam: tSrdoTabParam,
+    /// Granularity the application expects (`SRDO_GRANULARITY`).
+    pub m_bGranularity: BYTE,
+    /// 0x13FE configuration valid.
+    pub m_pbSrdoConfigValid: *mut BYTE,
+}
+
 /// `tSrdoCommuParam`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]

@@ -1,0 +1,485 @@
+//! SRDO / GFC C API (manual L-1077d sections 2.8, 2.11, 2.12): the CCM
+//! functions `CcmSendSrdo`, `CcmCheckSrdoConfig`, `CcmSendGfc`,
+//! `CcmGetSrdoState`, `CcmSetSrdoState`, `CcmGetSrdoParam`,
+//! `CcmStaticDefineSrdoVarFields`, `CcmCalcSrdoCrc`, and the module
+//! functions `Srdo*` with the same parameters.
+//!
+//! Conventions as in [`super::ccm`]. The application's callbacks
+//! (`AppSrdoEvent`, `AppSrdoError`, `AppGfcEvent`, `AppProgMonEvent`) run
+//! inside these calls and inside `CcmProcess`, with the stack released, so
+//! they may call `CcmGetSrdoState` / `CcmSetSrdoState`.
+
+use core::ffi::c_void;
+
+use super::driver::TgtClock;
+use super::global::{self, Instance};
+use super::types::*;
+use crate::error::{CopKernel, CopResult, to_code};
+use crate::event::{NmtEvent, NmtState};
+use crate::port::Clock;
+
+fn code(r: Result<CopResult, CopKernel>) -> tCopKernel {
+    match r {
+        Ok(inner) => to_code(inner),
+        Err(e) => e.code(),
+    }
+}
+
+fn drain() {
+    global::pump(|i, now| i.stack.drain(&mut i.port, now));
+}
+
+/// `CcmSendSrdo`: sends one transmit SRDO (`wSrdoCommuIndex_p` =
+/// 0x1301..0x1340) or, with 0, every transmit SRDO in index order. Before
+/// sending, the inverted data are checked bit by bit against the normal
+/// data; on a mismatch nothing is sent and `AppSrdoError` reports
+/// kCopSrdoDataError. After a successful transmission `AppSrdoEvent` runs.
+///
+/// Returns kCopSuccessful; kCopSrdoNotExist (no such SRDO); kCopSrdoNmtError
+/// (not OPERATIONAL, or within the first-transmission delay of 0.5 ms ×
+/// node-ID after entering OPERATIONAL); kCopSrdoInvalidCfg (0x13FE is not
+/// 0xA5); kCopSrdoInvalid (direction 0); kCopSrdoRxTxConflict (a receive
+/// SRDO); kCopSrdoDataError; the driver's code when it refuses a frame.
+/// With 0, every transmit SRDO is attempted and the first error is
+/// returned.
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmSendSrdo(wSrdoCommuIndex_p: WORD) -> tCopKernel {
+    if wSrdoCommuIndex_p != 0 {
+        return send_one(wSrdoCommuIndex_p);
+    }
+    let mut first = CopKernel::Successful.code();
+    for idx in 0x1301u16..=0x1340 {
+        let is_tx = global::with(|i| {
+            i.stack
+                .srdo()
+                .commu_param(i.stack.od(), idx)
+                .map(|p| p.direction == 1)
+                .unwrap_or(false)
+        });
+        match is_tx {
+            Ok(true) => {
+                let r = send_one(idx);
+                if r != 0 && first == 0 {
+                    first = r;
+                }
+            }
+            Ok(false) => {}
+            Err(e) => return e.code(),
+        }
+    }
+    first
+}
+
+fn send_one(idx: WORD) -> tCopKernel {
+    let now = TgtClock.now();
+    let r = global::with(|i| {
+        let Instance { stack, port, .. } = i;
+        stack.send_srdo(port, idx, now)
+    });
+    drain();
+    code(r)
+}
+
+/// `SrdoSend`: the module function behind `CcmSendSrdo`.
+#[unsafe(no_mangle)]
+pub extern "C" fn SrdoSend(wSrdoCommuIndex_p: WORD) -> tCopKernel {
+    CcmSendSrdo(wSrdoCommuIndex_p)
+}
+
+/// `CcmCheckSrdoConfig`: checks every SRDO (including disabled ones): CRC
+/// against 0x13FF, direction, timing, COB-IDs, mapping. On an error the
+/// communication index of the first bad SRDO is stored in
+/// `*pwCommuIndex_p`. Returns kCopSuccessful, kCopInvalidParam (NULL), or
+/// the first error: kCopSrdoCfgCrcError, kCopSrdoCfgTimingError,
+/// kCopSrdoCfgIdError, kCopSrdoCanIdAlreadyInUse, kCopSrdoErrorMapp,
+/// kCopSrdoLengthExceeded, kCopSrdoGranularityMismatch.
+///
+/// # Safety
+/// `pwCommuIndex_p` must be NULL or valid for writing a WORD.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmCheckSrdoConfig(pwCommuIndex_p: *mut WORD) -> tCopKernel {
+    if pwCommuIndex_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    match global::with(|i| i.stack.srdo().check_config(i.stack.od())) {
+        Ok(Ok(())) => 0,
+        Ok(Err((e, idx))) => {
+            // SAFETY: checked for NULL.
+            unsafe { *pwCommuIndex_p = idx };
+            e.code()
+        }
+        Err(e) => e.code(),
+    }
+}
+
+/// `SrdoCheckConfig`: the module function behind `CcmCheckSrdoConfig`.
+///
+/// # Safety
+/// As `CcmCheckSrdoConfig`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn SrdoCheckConfig(pwCommuIndex_p: *mut WORD) -> tCopKernel {
+    // SAFETY: same contract.
+    unsafe { CcmCheckSrdoConfig(pwCommuIndex_p) }
+}
+
+/// `CcmSendGfc` (only with `SRDO_USE_GFC`): sends the global fail-safe
+/// command (id 0x001, DLC 0); the application then sends an SRDO.
+/// kCopSrdoNmtError when not OPERATIONAL, kCopSrdoInvalid when 0x1300 is
+/// not 1, the driver's code when it refuses the frame.
+#[cfg(srdo_use_gfc)]
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmSendGfc() -> tCopKernel {
+    code(global::with(|i| {
+        let Instance { stack, port, .. } = i;
+        let state = stack.nmt_state();
+        stack.srdo_mut().send_gfc(port, state)
+    }))
+}
+
+/// `SrdoSendGfc`: the module function behind `CcmSendGfc`.
+#[cfg(srdo_use_gfc)]
+#[unsafe(no_mangle)]
+pub extern "C" fn SrdoSendGfc() -> tCopKernel {
+    CcmSendGfc()
+}
+
+/// `CcmGetSrdoState`: reads the status byte of an SRDO (manual 2.5.3).
+/// kCopInvalidParam (NULL), kCopSrdoNotExist.
+///
+/// # Safety
+/// `pbSrdoState_p` must be NULL or valid for writing a byte.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmGetSrdoState(
+    pbSrdoState_p: *mut BYTE,
+    wSrdoCommuIndex_p: WORD,
+) -> tCopKernel {
+    if pbSrdoState_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    match global::with(|i| i.stack.srdo().get_state(wSrdoCommuIndex_p)) {
+        Ok(Ok(s)) => {
+            // SAFETY: checked for NULL.
+            unsafe { *pbSrdoState_p = s };
+            0
+        }
+        Ok(Err(e)) | Err(e) => e.code(),
+    }
+}
+
+/// `SrdoGetState`: the module function behind `CcmGetSrdoState`.
+///
+/// # Safety
+/// As `CcmGetSrdoState`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn SrdoGetState(
+    pbSrdoState_p: *mut BYTE,
+    wSrdoCommuIndex_p: WORD,
+) -> tCopKernel {
+    // SAFETY: same contract.
+    unsafe { CcmGetSrdoState(pbSrdoState_p, wSrdoCommuIndex_p) }
+}
+
+/// `CcmSetSrdoState`: writes bits 4-7 of the status byte (bits 0-3 are
+/// reserved and stay 0). kCopSrdoNotExist.
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmSetSrdoState(bSrdoState_p: BYTE, wSrdoCommuIndex_p: WORD) -> tCopKernel {
+    code(global::with(|i| {
+        i.stack
+            .srdo_mut()
+            .set_state(wSrdoCommuIndex_p, bSrdoState_p)
+    }))
+}
+
+/// `SrdoSetState`: the module function behind `CcmSetSrdoState`.
+#[unsafe(no_mangle)]
+pub extern "C" fn SrdoSetState(bSrdoState_p: BYTE, wSrdoCommuIndex_p: WORD) -> tCopKernel {
+    CcmSetSrdoState(bSrdoState_p, wSrdoCommuIndex_p)
+}
+
+fn get_commu(idx: WORD, p: *mut tSrdoCommuParam) -> tCopKernel {
+    if p.is_null() {
+        return 0;
+    }
+    match global::with(|i| i.stack.srdo().commu_param(i.stack.od(), idx)) {
+        Ok(Ok(c)) => {
+            // SAFETY: checked for NULL; the caller owns the structure.
+            unsafe {
+                *p = tSrdoCommuParam {
+                    m_bDirection: c.direction,
+                    m_wSct: c.sct_ms,
+                }
+            };
+            0
+        }
+        Ok(Err(e)) | Err(e) => e.code(),
+    }
+}
+
+#[cfg(not(srdo_static_mapping))]
+fn get_mapp(idx: WORD, p: *mut tSrdoMappParam) -> tCopKernel {
+    if p.is_null() {
+        return 0;
+    }
+    match global::with(|i| i.stack.srdo().mapp_param(i.stack.od(), idx)) {
+        Ok(Ok(m)) => {
+            let mut out = tSrdoMappParam {
+                m_bNoOfMappedObjects: m.count,
+                m_apMappedVariable: [core::ptr::null_mut(); crate::config::SRDO_MAX_MAPPENTRIES],
+            };
+            for (o, v) in out.m_apMappedVariable.iter_mut().zip(m.vars.iter()) {
+                *o = v.map_or(core::ptr::null_mut(), |s| s.as_ptr() as *mut c_void);
+            }
+            // SAFETY: checked for NULL; the caller owns the structure.
+            unsafe { *p = out };
+            0
+        }
+        Ok(Err(e)) | Err(e) => e.code(),
+    }
+}
+
+/// `CcmGetSrdoParam`: direction and SCT (`tSrdoCommuParam`) and, with
+/// dynamic mapping, the number of mapped objects and pointers to the mapped
+/// variables (`tSrdoMappParam`; NULL entries for dummy mappings). NULL
+/// structure pointers are skipped. With static mapping `tSrdoMappParam`
+/// does not exist: a non-NULL third argument gives kCopInvalidParam.
+/// kCopSrdoNotExist, kCopSrdoErrorMapp.
+///
+/// # Safety
+/// Non-NULL pointers must be valid for writing their structure.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmGetSrdoParam(
+    wSrdoCommuIndex_p: WORD,
+    pSrdoCommuParam_p: *mut tSrdoCommuParam,
+    pSrdoMappParam_p: *mut c_void,
+) -> tCopKernel {
+    let exists = global::with(|i| i.stack.srdo().get_state(wSrdoCommuIndex_p).map(|_| ()));
+    if let Err(e) = exists.and_then(|r| r) {
+        return e.code();
+    }
+    let r = get_commu(wSrdoCommuIndex_p, pSrdoCommuParam_p);
+    if r != 0 {
+        return r;
+    }
+    #[cfg(not(srdo_static_mapping))]
+    {
+        get_mapp(wSrdoCommuIndex_p, pSrdoMappParam_p as *mut tSrdoMappParam)
+    }
+    #[cfg(srdo_static_mapping)]
+    {
+        if pSrdoMappParam_p.is_null() {
+            0
+        } else {
+            CopKernel::InvalidParam.code()
+        }
+    }
+}
+
+/// `SrdoGetCommuParam`: direction and SCT of an SRDO. kCopInvalidParam
+/// (NULL), kCopSrdoNotExist.
+///
+/// # Safety
+/// `pSrdoCommuParam_p` must be NULL or valid for writing.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn SrdoGetCommuParam(
+    wSrdoCommuIndex_p: WORD,
+    pSrdoCommuParam_p: *mut tSrdoCommuParam,
+) -> tCopKernel {
+    if pSrdoCommuParam_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    get_commu(wSrdoCommuIndex_p, pSrdoCommuParam_p)
+}
+
+/// `SrdoGetMappParam` (dynamic mapping only). kCopInvalidParam (NULL),
+/// kCopSrdoNotExist, kCopSrdoErrorMapp.
+///
+/// # Safety
+/// `pSrdoMappParam_p` must be NULL or valid for writing.
+#[cfg(not(srdo_static_mapping))]
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn SrdoGetMappParam(
+    wSrdoCommuIndex_p: WORD,
+    pSrdoMappParam_p: *mut tSrdoMappParam,
+) -> tCopKernel {
+    if pSrdoMappParam_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    get_mapp(wSrdoCommuIndex_p, pSrdoMappParam_p)
+}
+
+/// `CcmCalcSrdoCrc`: the CRC-16 over one SRDO's parameters as they are now
+/// (also for a disabled SRDO; nothing is compared). kCopInvalidParam (NULL),
+/// kCopSrdoNotExist.
+///
+/// # Safety
+/// `pwCrc_p` must be NULL or valid for writing a WORD.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmCalcSrdoCrc(wCommuIndex_p: WORD, pwCrc_p: *mut WORD) -> tCopKernel {
+    if pwCrc_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    match global::with(|i| i.stack.srdo().calc_crc(i.stack.od(), wCommuIndex_p)) {
+        Ok(Ok(crc)) => {
+            // SAFETY: checked for NULL.
+            unsafe { *pwCrc_p = crc };
+            0
+        }
+        Ok(Err(e)) | Err(e) => e.code(),
+    }
+}
+
+/// `SrdoCalcSrdoCrc`: as `CcmCalcSrdoCrc`; `pSrdoEntry_p` must be NULL
+/// (manual 2.11.13), otherwise kCopInvalidParam.
+///
+/// # Safety
+/// `pwCrc_p` must be NULL or valid for writing a WORD.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn SrdoCalcSrdoCrc(
+    wCommuIndex_p: WORD,
+    pSrdoEntry_p: *mut c_void,
+    pwCrc_p: *mut WORD,
+) -> tCopKernel {
+    if !pSrdoEntry_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    // SAFETY: same contract.
+    unsafe { CcmCalcSrdoCrc(wCommuIndex_p, pwCrc_p) }
+}
+
+/// `CcmStaticDefineSrdoVarFields` (only with `SRDO_USE_STATIC_MAPPING`):
+/// hands an SRDO its two contiguous variable fields (normal and inverted
+/// data, at most 8 bytes each, no padding). The library checks that the
+/// fields are exactly the variables the OD mapping points to and copies
+/// frames directly from and to them. kCopInvalidParam (NULL),
+/// kCopSrdoNotExist, kCopSrdoErrorMapp (fields do not match the mapping),
+/// kCopSrdoLengthExceeded (> 8 bytes), kCopSrdoNmtError (OPERATIONAL).
+///
+/// # Safety
+/// Both fields must stay valid for the mapped length for as long as the
+/// stack runs (they are application statics in practice).
+#[cfg(srdo_static_mapping)]
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmStaticDefineSrdoVarFields(
+    wCommuIndex_p: WORD,
+    pNormalData_p: *mut c_void,
+    pInversData_p: *mut c_void,
+) -> tCopKernel {
+    if pNormalData_p.is_null() || pInversData_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    code(global::with(|i| {
+        let len = usize::from(i.stack.srdo().mapped_len(i.stack.od(), wCommuIndex_p)?);
+        // SAFETY: the caller guarantees both fields hold the mapped length
+        // for the lifetime of the stack.
+        let (n, v) = unsafe {
+            (
+                super::ccm::static_bytes(pNormalData_p, len),
+                super::ccm::static_bytes(pInversData_p, len),
+            )
+        };
+        let Instance { stack, .. } = i;
+        let od = *stack.od();
+        stack
+            .srdo_mut()
+            .static_define_var_fields(&od, wCommuIndex_p, n, v)
+    }))
+}
+
+/// `SrdoStaticDefineVarFields`: the module function behind
+/// `CcmStaticDefineSrdoVarFields`.
+///
+/// # Safety
+/// As `CcmStaticDefineSrdoVarFields`.
+#[cfg(srdo_static_mapping)]
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn SrdoStaticDefineVarFields(
+    wCommuIndex_p: WORD,
+    pNormalData_p: *mut c_void,
+    pInversData_p: *mut c_void,
+) -> tCopKernel {
+    // SAFETY: same contract.
+    unsafe { CcmStaticDefineSrdoVarFields(wCommuIndex_p, pNormalData_p, pInversData_p) }
+}
+
+/// `SrdoInit` (manual 2.11.1): `CcmInitCANopen` initialises the SRDO module
+/// itself; calling this afterwards re-reads the SRDO objects of the
+/// dictionary and stops every SRDO until the next transition to
+/// OPERATIONAL. kCopInvalidParam (NULL), kCopSrdoGranularityMismatch when
+/// `m_bGranularity` differs from the library's `SRDO_GRANULARITY`,
+/// kCopIllegalInstance before `CcmInitCANopen`.
+///
+/// # Safety
+/// `pInitParam_p` must be NULL or point to a valid `tSrdoInitParam`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn SrdoInit(pInitParam_p: *const tSrdoInitParam) -> tCopKernel {
+    if pInitParam_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    // SAFETY: checked for NULL.
+    let p = unsafe { *pInitParam_p };
+    if p.m_bGranularity != 0 && p.m_bGranularity != crate::config::SRDO_GRANULARITY {
+        return CopKernel::SrdoGranularityMismatch.code();
+    }
+    code(global::with(|i| {
+        let od = *i.stack.od();
+        i.stack.srdo_mut().init(&od)
+    }))
+}
+
+/// `SrdoAddInstance`: single-instance build — behaves like `SrdoInit`.
+///
+/// # Safety
+/// As `SrdoInit`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn SrdoAddInstance(pInitParam_p: *const tSrdoInitParam) -> tCopKernel {
+    // SAFETY: same contract.
+    unsafe { SrdoInit(pInitParam_p) }
+}
+
+/// `SrdoDeleteInstance`: stops every SRDO (as leaving OPERATIONAL does);
+/// they restart with the next transition to OPERATIONAL.
+#[unsafe(no_mangle)]
+pub extern "C" fn SrdoDeleteInstance() -> tCopKernel {
+    let now = TgtClock.now();
+    code(global::with(|i| {
+        let node = i.stack.node_id();
+        let od = *i.stack.od();
+        i.stack
+            .srdo_mut()
+            .on_state(&od, NmtState::PreOperational, node, now);
+        Ok(())
+    }))
+}
+
+/// `SrdoNmtEvent`: the stack passes every NMT event to the SRDO module
+/// itself. Called by the application, an event that matches the node's
+/// current state is accepted (kCopSuccessful, nothing changes); one that
+/// contradicts it gives kCopSrdoNmtError, so the module can never run out
+/// of step with the node.
+#[unsafe(no_mangle)]
+pub extern "C" fn SrdoNmtEvent(NmtEvent_p: tNmtEvent) -> tCopKernel {
+    code(global::with(|i| {
+        let s = i.stack.nmt_state();
+        let consistent = match NmtEvent_p {
+            x if x == NmtEvent::EnterOperational as u32 => s == NmtState::Operational,
+            x if x == NmtEvent::EnterPreOperational as u32 => s == NmtState::PreOperational,
+            x if x == NmtEvent::EnterStopped as u32 => s == NmtState::Stopped,
+            x if x <= NmtEvent::PostResetCommunication as u32 => true,
+            _ => false,
+        };
+        if consistent {
+            Ok(())
+        } else {
+            Err(CopKernel::SrdoNmtError)
+        }
+    }))
+}
+
+/// `SrdoProcess`: one processing cycle of the stack (received frames, SRDO
+/// checks, timers), exactly as `CcmProcess`, which already calls the SRDO
+/// module; returns kCopSrdoNotHandledInApp when an error reported in this
+/// cycle was not acknowledged by `AppSrdoError` (status bits 6-7 = 10).
+#[unsafe(no_mangle)]
+pub extern "C" fn SrdoProcess() -> tCopKernel {
+    super::ccm::CcmProcess()
+}
