@@ -29,13 +29,13 @@
 //! cop::obd_create_srdo_commu!(pub mod srdo1, 0x1301, 1, 25, 20, 0x101, 0x102);
 //! cop::obd_create_srdo_mapp!(pub mod srdo1_mapp, 0x1381, [0x6200_0110, 0x6201_0110]);
 //! cop::obd_create_srdo_cfg_valid!(pub mod cfg_valid);
-//! cop::obd_create_srdo_crc!(pub mod crc, [0x0000]);
+//! cop::obd_create_srdo_crc!(pub mod checksums, [0x0000]);
 //! static PART: [ObdEntry; 5] = [
 //!     cop::srdo_obd_entry!(gfc),
 //!     cop::srdo_obd_entry!(srdo1),
 //!     cop::srdo_obd_entry!(srdo1_mapp),
 //!     cop::srdo_obd_entry!(cfg_valid),
-//!     cop::srdo_obd_entry!(crc),
+//!     cop::srdo_obd_entry!(checksums),
 //! ];
 //! ```
 

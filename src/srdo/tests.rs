@@ -4,7 +4,6 @@
 use core::sync::atomic::AtomicU8;
 
 use super::*;
-use crate::event::QUEUE_CAPACITY;
 use crate::od::{Access, DataType, ObdEntry, ObdSubEntry, decl};
 use crate::port::{CanFrame, CanId};
 
@@ -95,17 +94,26 @@ crate::obd_create_srdo_mapp!(
     0x1383,
     [0x6300_0110, 0x6300_0210, 0x6200_0108, 0x6200_0208]
 );
+// SRDO 4: 4 + 4 + 3 = 11 bytes of data, more than one frame holds.
+crate::obd_create_srdo_commu!(mod c4, 0x1304, 0, 25, 20, 0x107, 0x108);
+crate::obd_create_srdo_mapp!(
+    mod m4,
+    0x1384,
+    [0x6400_0320, 0x6400_0420, 0x6400_0320, 0x6400_0420, 0x6500_0118, 0x6500_0218]
+);
 crate::obd_create_srdo_cfg_valid!(mod cfg_valid);
-crate::obd_create_srdo_crc!(mod crcs, [0, 0, 0]);
+crate::obd_create_srdo_crc!(mod crcs, [0, 0, 0, 0]);
 
-static GENERIC: [ObdEntry; 9] = [
+static GENERIC: [ObdEntry; 11] = [
     crate::srdo_obd_entry!(gfc),
     crate::srdo_obd_entry!(c1),
     crate::srdo_obd_entry!(c2),
     crate::srdo_obd_entry!(c3),
+    crate::srdo_obd_entry!(c4),
     crate::srdo_obd_entry!(m1),
     crate::srdo_obd_entry!(m2),
     crate::srdo_obd_entry!(m3),
+    crate::srdo_obd_entry!(m4),
     crate::srdo_obd_entry!(cfg_valid),
     crate::srdo_obd_entry!(crcs),
 ];
@@ -152,6 +160,7 @@ fn set(od: &ObjectDictionary, index: u16, sub: u8, v: u64) {
     od.poke_uint(index, sub, v).unwrap();
 }
 
+#[cfg_attr(srdo_static_mapping, allow(dead_code))]
 fn get(od: &ObjectDictionary, index: u16, sub: u8) -> u64 {
     od.read_uint(index, sub).unwrap()
 }
@@ -165,6 +174,7 @@ fn seal(od: &ObjectDictionary, srdo: &Srdo) {
     set(od, CONFIG_VALID_INDEX, 0, u64::from(CONFIG_VALID));
 }
 
+#[cfg_attr(srdo_static_mapping, allow(dead_code))]
 /// Runs the queue like the stack does; `handler` plays the application
 /// and returns the status byte to set in response to an event (or `None`).
 fn run(
@@ -188,6 +198,7 @@ fn run(
     out
 }
 
+#[cfg_attr(srdo_static_mapping, allow(dead_code))]
 /// The application of manual 2.9.1 / 2.9.2: on success sets bits 4-5 to
 /// 11, on error (bits 4-5 = 01) sets 11 and toggles bits 6-7 (01 -> 10).
 fn manual_app(srdo: &Srdo, e: &Event) -> Option<(u16, u8)> {
@@ -203,6 +214,7 @@ fn manual_app(srdo: &Srdo, e: &Event) -> Option<(u16, u8)> {
     }
 }
 
+#[cfg_attr(srdo_static_mapping, allow(dead_code))]
 fn pm(e: ProgMonEvent) -> Vec<Event> {
     if SRDO_USE_PROGMONITOR {
         vec![Event::ProgMon(e)]
@@ -211,6 +223,7 @@ fn pm(e: ProgMonEvent) -> Vec<Event> {
     }
 }
 
+#[cfg_attr(srdo_static_mapping, allow(dead_code))]
 fn rx(id: u16, data: &[u8], t: u32) -> RxFrame {
     RxFrame {
         frame: CanFrame::new(CanId::std_masked(id), data),
@@ -256,7 +269,7 @@ fn crc_vectors_through_calc_crc() {
     // 0 are computed too (manual 2.8.8).
     set(&od, 0x1301, 1, 0);
     assert_ne!(srdo.calc_crc(&od, 0x1301), Ok(0xD879));
-    assert_eq!(srdo.calc_crc(&od, 0x1304), Err(CopKernel::SrdoNotExist));
+    assert_eq!(srdo.calc_crc(&od, 0x1305), Err(CopKernel::SrdoNotExist));
 }
 
 #[test]
@@ -285,10 +298,10 @@ fn crc_byte_stream_of_row_1() {
 #[test]
 fn init_finds_objects_and_refuses_bad_tables() {
     let (_g, od, srdo) = setup();
-    assert_eq!(srdo.count(), 3);
+    assert_eq!(srdo.count(), 4);
     assert_eq!(
         srdo.commu_indices().collect::<Vec<_>>(),
-        [0x1301, 0x1302, 0x1303]
+        [0x1301, 0x1302, 0x1303, 0x1304]
     );
     let gapped = ObjectDictionary::new(&GAPPED, &[], &[]).unwrap();
     let mut s = Srdo::new();
@@ -329,7 +342,7 @@ fn state_byte_api() {
         Ok(0xB0),
         "bits 0-3 stay reserved (0)"
     );
-    for bad in [0x0000, 0x1300, 0x1304, 0x1340, 0x1381, 0xFFFF] {
+    for bad in [0x0000, 0x1300, 0x1305, 0x1340, 0x1381, 0xFFFF] {
         assert_eq!(srdo.get_state(bad), Err(CopKernel::SrdoNotExist));
         assert_eq!(srdo.set_state(bad, 0), Err(CopKernel::SrdoNotExist));
     }
@@ -350,6 +363,7 @@ fn commu_param_and_mapped_len() {
     assert_eq!(srdo.mapped_len(&od, 0x1301), Ok(1));
     assert_eq!(srdo.mapped_len(&od, 0x1302), Ok(2));
     assert_eq!(srdo.mapped_len(&od, 0x1303), Ok(3));
+    assert_eq!(srdo.mapped_len(&od, 0x1304), Ok(11));
     assert_eq!(srdo.commu_param(&od, 0x1305), Err(CopKernel::SrdoNotExist));
     set(&od, 0x1301, 1, 1);
     set(&od, 0x1303, 1, 1);
@@ -388,6 +402,7 @@ type Frames = &'static [(u16, &'static [u8], u32)];
 #[cfg(not(srdo_static_mapping))]
 mod dynamic {
     use super::*;
+    use crate::event::QUEUE_CAPACITY;
 
     /// SRDO 0x1301: receive, SCT 25 ms, SRVT 20 ms, COB-IDs 0x101/0x102,
     /// normal 0x6201 sub 1 (U16), inverted 0x6301 sub 1 (U16); DLC 2.
@@ -723,6 +738,7 @@ mod dynamic {
             expected.extend(pm(ProgMonEvent::SctChecked));
             expected.extend(pm(ProgMonEvent::SctNotCheckedItIsInvalid));
             expected.extend(pm(ProgMonEvent::SctNotCheckedItIsInvalid));
+            expected.extend(pm(ProgMonEvent::SctNotCheckedItIsInvalid));
             assert_eq!(ev, expected, "SRDO_CHECK_SRVT_BEFORE_1STRX = {switch}");
             // With TRUE the half was dropped: its inverted frame is out of
             // order; with FALSE the late frame gives SRVT timeout.
@@ -743,5 +759,66 @@ mod dynamic {
             let ev = timers(&mut srdo, 251, switch);
             assert_eq!(ev[0], Event::SrdoError(0x1301, CopKernel::SrdoSctTimeout));
         }
+    }
+}
+
+/// Static mapping: the variable fields must be the mapped variables.
+#[cfg(srdo_static_mapping)]
+mod static_mapping {
+    use super::*;
+
+    #[test]
+    fn var_fields_must_match_the_mapping() {
+        let (_g, od, mut srdo) = setup();
+        // SRDO 1 maps 0x6200 sub 1 (normal) and 0x6200 sub 2 (inverted):
+        // NORMAL[0] and NORMAL[1].
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1301, &NORMAL[0..1], &INVERTED[0..1]),
+            Err(CopKernel::SrdoErrorMapp),
+            "inverted field at the wrong address"
+        );
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1301, &NORMAL[1..2], &NORMAL[1..2]),
+            Err(CopKernel::SrdoErrorMapp),
+            "normal field at the wrong address"
+        );
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1301, &NORMAL[0..1], &NORMAL[1..2]),
+            Ok(())
+        );
+        // SRDO 3 maps 0x6300 sub 1 with 16 bits, but the variable is 8 bits.
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1303, &INVERTED[0..3], &NORMAL[0..3]),
+            Err(CopKernel::SrdoErrorMapp)
+        );
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1304, &NORMAL[0..8], &INVERTED[0..8]),
+            Err(CopKernel::SrdoLengthExceeded)
+        );
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1305, &NORMAL[0..1], &NORMAL[1..2]),
+            Err(CopKernel::SrdoNotExist)
+        );
+        srdo.on_state(&od, NmtState::Operational, 1, Ticks(0));
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1301, &NORMAL[0..1], &NORMAL[1..2]),
+            Err(CopKernel::SrdoNmtError)
+        );
+    }
+
+    #[test]
+    fn active_srdo_without_fields_fails_the_check() {
+        let (_g, od, mut srdo) = setup();
+        set(&od, 0x1302, 1, 1);
+        seal(&od, &srdo);
+        assert_eq!(
+            srdo.check_config_with(&od, 8),
+            Err((CopKernel::SrdoErrorMapp, 0x1302))
+        );
+        srdo.static_define_var_fields(&od, 0x1302, &NORMAL[0..2], &NORMAL[2..4])
+            .unwrap_err();
+        // 0x1382 maps 0x6200 sub 1..4: normal sub 1 and 3, inverted 2 and 4,
+        // which are not contiguous fields.
+        assert!(srdo.check_config_with(&od, 8).is_err());
     }
 }
