@@ -879,11 +879,21 @@ impl Srdo {
             return;
         }
         if s.direction == Direction::Transmit as u8 {
-            Self::progmon(q, ProgMonEvent::SctNotCheckedItIsTx);
-            if s.flags & flag::ARMED != 0 && now.is_after(s.deadline) {
-                s.flags &= !flag::ARMED;
-                Self::progmon(q, ProgMonEvent::SrdoError);
+            // The refresh time only feeds the program monitor.
+            if SRDO_USE_PROGMONITOR {
+                Self::progmon(q, ProgMonEvent::SctNotCheckedItIsTx);
+                if s.flags & flag::ARMED != 0 && now.is_after(s.deadline) {
+                    s.flags &= !flag::ARMED;
+                    Self::progmon(q, ProgMonEvent::SrdoError);
+                }
             }
+            return;
+        }
+        // Fast path of an idle cycle: no deadline passed, nothing to watch.
+        let deadline_over = s.flags & flag::ARMED != 0 && now.is_after(s.deadline);
+        let watch_srvt = srvt_before_1st && s.flags & flag::HOLDING != 0;
+        if !(deadline_over || watch_srvt) {
+            Self::progmon(q, ProgMonEvent::SctChecked);
             return;
         }
         let holding = s.flags & flag::HOLDING != 0;
@@ -896,7 +906,7 @@ impl Srdo {
         // A first frame that came in time may still complete its pair
         // within SRVT; until then the SCT is not over.
         let pair_pending = holding && !srvt_over && !s.held_at.is_after(s.deadline);
-        let sct_error = s.flags & flag::ARMED != 0 && now.is_after(s.deadline) && !pair_pending;
+        let sct_error = deadline_over && !pair_pending;
         if sct_error {
             s.flags &= !flag::ARMED;
         }

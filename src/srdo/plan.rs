@@ -42,6 +42,9 @@ pub(crate) struct Plan {
     meta: [u8; SRDO_MAX_MAPPENTRIES],
     /// Number of entries.
     count: u8,
+    /// Every entry is a plain RAM variable (or a dummy), so resolving a
+    /// variable cannot fail and received data are written in one pass.
+    all_ram: bool,
 }
 
 #[cfg(not(srdo_static_mapping))]
@@ -52,6 +55,7 @@ impl Plan {
         element: [0; SRDO_MAX_MAPPENTRIES],
         meta: [0; SRDO_MAX_MAPPENTRIES],
         count: 0,
+        all_ram: true,
     };
 
     /// Builds the plan of an SRDO whose configuration passed the check.
@@ -60,6 +64,7 @@ impl Plan {
         let mapp_index = commu_index + MAPP_OFFSET;
         let count = read_u8(od, mapp_index, 0)?;
         let mut plan = Plan::EMPTY;
+        plan.all_ram = true;
         for i in 0..usize::from(count) {
             let sub = u8::try_from(i + 1).ok()?;
             let entry = MappingEntry::decode(read_u32(od, mapp_index, sub)?);
@@ -71,6 +76,9 @@ impl Plan {
                 let element = obj.sub().checked_sub(obj.desc().sub())?;
                 (Some(obj.desc()), element, obj.data_type().is_signed())
             };
+            if let Some(d) = desc {
+                plan.all_ram &= matches!(d.storage(usize::from(element)), Some(Storage::Ram(_)));
+            }
             *plan.desc.get_mut(i)? = desc;
             *plan.element.get_mut(i)? = element;
             *plan.meta.get_mut(i)? = (wire & 0x0F) | if signed { META_SIGNED } else { 0 };
@@ -129,6 +137,9 @@ impl Plan {
     /// Writes received normal and inverted data to the mapped variables.
     /// Either every variable is written or, when one is missing, none.
     pub(crate) fn scatter(&self, normal: u64, inverted: u64) -> bool {
+        if self.all_ram {
+            return self.scatter_ram(normal, inverted);
+        }
         let Some(vars) = self.resolve() else {
             return false;
         };
@@ -147,6 +158,40 @@ impl Plan {
                     value = crate::od::value::sign_extend(value, usize::from(wire));
                 }
                 store_native(m, value);
+            }
+            if i % 2 == 1 {
+                offset += 8 * u32::from(wire);
+            }
+        }
+        true
+    }
+}
+
+#[cfg(not(srdo_static_mapping))]
+impl Plan {
+    /// [`Plan::scatter`] for plans of RAM variables only: one pass, the
+    /// variables are resolved while writing (they cannot be missing).
+    #[inline]
+    fn scatter_ram(&self, normal: u64, inverted: u64) -> bool {
+        let data = [normal, inverted];
+        let mut offset = 0u32;
+        for (i, ((desc, element), meta)) in self
+            .desc
+            .iter()
+            .zip(&self.element)
+            .zip(&self.meta)
+            .take(usize::from(self.count))
+            .enumerate()
+        {
+            let wire = *meta & 0x0F;
+            if let (Some(d), Some(v)) = (desc, data.get(i % 2)) {
+                if let Some(Storage::Ram(m)) = d.storage(usize::from(*element)) {
+                    let mut value = v.checked_shr(offset).unwrap_or(0) & payload_mask(wire);
+                    if *meta & META_SIGNED != 0 {
+                        value = crate::od::value::sign_extend(value, usize::from(wire));
+                    }
+                    store_native(m, value);
+                }
             }
             if i % 2 == 1 {
                 offset += 8 * u32::from(wire);
