@@ -822,3 +822,147 @@ mod static_mapping {
         assert!(srdo.check_config_with(&od, 8).is_err());
     }
 }
+
+/// 64 receive SRDOs: dispatch, overrun and timer steps keep the action
+/// queue small (it holds 16 actions) and nothing is lost.
+#[cfg(not(srdo_static_mapping))]
+mod sixty_four {
+    use super::*;
+    use crate::event::QUEUE_CAPACITY;
+    use crate::od::ObdSubEntry;
+    use crate::srdo::objects::{
+        COMMU_SUBS, CommuDefaults, CommuVars, MAPP_SUBS, MappDefaults, MappVars, commu_subs,
+        crc_subs, mapp_subs,
+    };
+
+    const N: usize = 64;
+    const PH: ObdSubEntry = ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[0]);
+    const PE: ObdEntry = ObdEntry::new(0, &[], None);
+
+    static CV: [CommuVars; N] = [const { CommuVars::new() }; N];
+    static MV: [MappVars; N] = [const { MappVars::new() }; N];
+    static MD: MappDefaults = MappDefaults::new(&[0x6201_0110, 0x6301_0110]);
+    static CD: [CommuDefaults; N] = commu_defaults();
+    static CS: [[ObdSubEntry; COMMU_SUBS]; N] = commu_tables();
+    static MS: [[ObdSubEntry; MAPP_SUBS]; N] = mapp_tables();
+    static CRC_COUNT: [u8; 1] = [N as u8];
+    static CRC_VARS: [AtomicU8; 2 * N] = decl::zeroed();
+    static CRC_DEF: [u8; 2 * N] = [0; 2 * N];
+    static CRC_SUBS: [ObdSubEntry; N + 1] = crc_subs::<{ N + 1 }>(&CRC_COUNT, &CRC_VARS, &CRC_DEF);
+    crate::obd_create_srdo_cfg_valid!(mod valid64);
+    static GENERIC64: [ObdEntry; 2 * N + 2] = generic();
+
+    /// SRDO n (1..=64) receives on the predefined COB-IDs of node n.
+    const fn commu_defaults() -> [CommuDefaults; N] {
+        let mut a = [const { CommuDefaults::new(0, 0, 0, 0, 0) }; N];
+        let mut i = 0;
+        while i < N {
+            let ids = match wire::SrdoCobIds::predefined(i as u8 + 1) {
+                Some(ids) => ids,
+                None => panic!("node out of range"),
+            };
+            a[i] = CommuDefaults::new(2, 25, 20, ids.normal() as u32, ids.inverted() as u32);
+            i += 1;
+        }
+        a
+    }
+
+    const fn commu_tables() -> [[ObdSubEntry; COMMU_SUBS]; N] {
+        let mut a = [const { [PH; COMMU_SUBS] }; N];
+        let mut i = 0;
+        while i < N {
+            a[i] = commu_subs(&CV[i], &CD[i]);
+            i += 1;
+        }
+        a
+    }
+
+    const fn mapp_tables() -> [[ObdSubEntry; MAPP_SUBS]; N] {
+        let mut a = [const { [PH; MAPP_SUBS] }; N];
+        let mut i = 0;
+        while i < N {
+            a[i] = mapp_subs(&MV[i], &MD);
+            i += 1;
+        }
+        a
+    }
+
+    const fn generic() -> [ObdEntry; 2 * N + 2] {
+        let mut a = [PE; 2 * N + 2];
+        let mut i = 0;
+        while i < N {
+            a[i] = ObdEntry::new(0x1301 + i as u16, &CS[i], None);
+            a[N + i] = ObdEntry::new(0x1381 + i as u16, &MS[i], None);
+            i += 1;
+        }
+        a[2 * N] = crate::srdo_obd_entry!(valid64);
+        a[2 * N + 1] = ObdEntry::new(CRC_INDEX, &CRC_SUBS, None);
+        a
+    }
+
+    #[test]
+    fn sixty_four_receive_srdos() {
+        let _g = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+        let od = ObjectDictionary::new(&GENERIC64, &[], &DEVICE).unwrap();
+        od.restore_defaults(0x1000, 0x9FFF);
+        let mut srdo = Srdo::new();
+        srdo.init(&od).unwrap();
+        assert_eq!(srdo.count(), 64);
+        seal(&od, &srdo);
+        assert_eq!(srdo.check_config(&od), Ok(()));
+        srdo.on_state(&od, NmtState::Operational, 70, Ticks(0));
+        assert!(srdo.is_running());
+
+        // Constant-time dispatch: the last SRDO's pair (node 64: 0x17F/0x180).
+        let mut q = ActionQueue::new();
+        srdo.on_frame(&od, NmtState::Operational, &rx(0x17F, &[7, 0], 5), &mut q);
+        srdo.on_frame(
+            &od,
+            NmtState::Operational,
+            &rx(0x180, &[0xF8, 0xFF], 6),
+            &mut q,
+        );
+        assert_eq!(
+            run(&mut srdo, &mut q, manual_app)[0],
+            Event::SrdoEvent(0x1340)
+        );
+        assert_eq!(get(&od, 0x6201, 1), 7);
+
+        // Overrun: one SRDO per step, at most two actions each.
+        srdo.on_rx_overrun();
+        let mut overruns = 0;
+        loop {
+            let done = srdo.report_overrun(&mut q);
+            assert!(q.len() <= 2 && q.len() <= QUEUE_CAPACITY);
+            overruns += run(&mut srdo, &mut q, manual_app)
+                .iter()
+                .filter(|e| matches!(e, Event::SrdoError(_, CopKernel::SrdoOverrun)))
+                .count();
+            if done {
+                break;
+            }
+        }
+        assert_eq!(overruns, 64);
+
+        // Every SCT expires in the same cycle (SRDO 64 was re-armed at 5).
+        srdo.begin_cycle();
+        let mut timeouts = Vec::new();
+        let mut steps = 0;
+        loop {
+            let done = srdo.poll(&od, NmtState::Operational, Ticks(251), &mut q);
+            assert!(q.len() <= 5, "one step queues at most five actions");
+            steps += 1;
+            timeouts.extend(run(&mut srdo, &mut q, manual_app).into_iter().filter_map(
+                |e| match e {
+                    Event::SrdoError(idx, CopKernel::SrdoSctTimeout) => Some(idx),
+                    _ => None,
+                },
+            ));
+            if done {
+                break;
+            }
+        }
+        assert_eq!(timeouts, (0x1301..=0x133F).collect::<Vec<u16>>());
+        assert!(steps >= 63);
+    }
+}
