@@ -30,6 +30,7 @@ use crate::hbc::HeartbeatConsumer;
 use crate::heartbeat::HeartbeatProducer;
 use crate::nmtm::NmtMaster;
 use crate::od::{ByteOrder, Object, ObjectDictionary, Staged, WriteHooks};
+use crate::pdo::Pdo;
 use crate::port::{CanId, CanPort, Priority, RxFrame, Ticks};
 use crate::sdo::{SdoClient, SdoServer};
 use crate::srdo::Srdo;
@@ -82,6 +83,8 @@ enum Phase {
     Receive,
     /// SRDO timers (resumable).
     SrdoTimers,
+    /// PDO and SYNC work (resumable).
+    PdoTimers,
     /// Heartbeat consumer (resumable).
     HbcTimers,
     /// NMT master guarding (resumable).
@@ -111,6 +114,7 @@ pub struct Stack {
     sdo: SdoServer,
     sdoc: SdoClient,
     srdo: Srdo,
+    pdo: Pdo,
 }
 
 /// The module reactions to dictionary writes.
@@ -119,6 +123,7 @@ struct Hooks<'a> {
     node: u8,
     now: Ticks,
     srdo: &'a mut Srdo,
+    pdo: &'a mut Pdo,
     hb: &'a mut HeartbeatProducer,
     hbc: &'a mut HeartbeatConsumer,
     emcy: &'a mut EmcyProducer,
@@ -134,6 +139,9 @@ impl WriteHooks for Hooks<'_> {
     ) -> Result<(), OdError> {
         if (0x1300..=0x13FF).contains(&obj.index()) {
             self.srdo.check_write(od, obj, value, self.state)?;
+        }
+        if crate::pdo::handles(obj.index()) {
+            self.pdo.check_write(od, obj, value)?;
         }
         Ok(())
     }
@@ -153,6 +161,7 @@ impl WriteHooks for Hooks<'_> {
             }
             0x1200..=0x127F => self.sdo_changed = true,
             0x1300..=0x13FF => self.srdo.after_store(od, obj),
+            i if crate::pdo::handles(i) => self.pdo.after_store(od, obj, self.now),
             _ => {}
         }
     }
@@ -184,6 +193,7 @@ impl Stack {
             sdo: SdoServer::new(),
             sdoc: SdoClient::new(),
             srdo: Srdo::new(),
+            pdo: Pdo::new(),
         };
         s.srdo.init(&s.od)?;
         s.queue.emit(Event::Nmt(NmtEvent::EnterInitialising));
@@ -239,6 +249,21 @@ impl Stack {
     /// The SRDO module, mutable.
     pub fn srdo_mut(&mut self) -> &mut Srdo {
         &mut self.srdo
+    }
+
+    /// The PDO module.
+    pub fn pdo(&self) -> &Pdo {
+        &self.pdo
+    }
+
+    /// The PDO module with what its API needs of the stack.
+    pub(crate) fn pdo_parts(&mut self) -> crate::pdo::Parts<'_> {
+        crate::pdo::Parts {
+            od: &self.od,
+            pdo: &mut self.pdo,
+            state: self.state,
+            queue: &mut self.queue,
+        }
     }
 
     /// The heartbeat consumer.
@@ -332,6 +357,7 @@ impl Stack {
     pub fn begin_cycle(&mut self) {
         self.phase = Phase::Overrun;
         self.srdo.begin_cycle();
+        self.pdo.begin_cycle();
     }
 
     /// Runs the stack until it has an event for the application or nothing
@@ -366,6 +392,12 @@ impl Stack {
                 },
                 Phase::SrdoTimers => {
                     if self.srdo.poll(&self.od, self.state, now, &mut self.queue) {
+                        self.phase = Phase::PdoTimers;
+                    }
+                }
+                Phase::PdoTimers => {
+                    let (od, q, emcy) = (&self.od, &mut self.queue, &mut self.emcy);
+                    if self.pdo.poll(od, self.state, port, now, q, emcy) {
                         self.phase = Phase::HbcTimers;
                     }
                 }
@@ -463,6 +495,10 @@ impl Stack {
         {
             return;
         }
+        let (od, q, emcy) = (&self.od, &mut self.queue, &mut self.emcy);
+        if self.pdo.on_frame(od, self.state, rx, port, now, q, emcy) {
+            return;
+        }
         if self.sdoc.on_frame(port, f, now, &mut self.queue) {
             return;
         }
@@ -472,6 +508,7 @@ impl Stack {
                 node: self.node_id,
                 now,
                 srdo: &mut self.srdo,
+                pdo: &mut self.pdo,
                 hb: &mut self.hb,
                 hbc: &mut self.hbc,
                 emcy: &mut self.emcy,
@@ -563,6 +600,7 @@ impl Stack {
                 self.sdoc.reconfigure(&self.od);
                 self.subscribe(port);
                 self.srdo.reconfigure(&self.od, port);
+                self.pdo.reconfigure(&self.od, self.node_id, port);
                 if self.connected && self.state == NmtState::Initialisation {
                     self.queue_state(NmtState::PreOperational);
                 }
@@ -616,6 +654,7 @@ impl Stack {
             self.hb.start(now);
         }
         self.srdo.on_state(&self.od, s, self.node_id, now);
+        self.pdo.on_state(s, now);
     }
 
     /// `CcmReadObject` / SDO-independent read.
@@ -643,6 +682,7 @@ impl Stack {
             node: self.node_id,
             now,
             srdo: &mut self.srdo,
+            pdo: &mut self.pdo,
             hb: &mut self.hb,
             hbc: &mut self.hbc,
             emcy: &mut self.emcy,

@@ -114,6 +114,9 @@ pub enum Event {
     },
     /// An emergency message was received from a node (consumer).
     Emcc(u8, crate::wire::emcy::Emergency),
+    /// The PDO callback (`tPdoCallback(commu_index)`) of a PDO defined with
+    /// one: an RPDO's data reached its variables, or a TPDO was sent.
+    Pdo(u16),
 }
 
 /// Work the stack does between two events (never visible to the caller).

@@ -37,6 +37,7 @@ pub mod hbc;
 pub mod heartbeat;
 pub mod nmtm;
 pub mod od;
+pub mod pdo;
 pub mod port;
 pub mod sdo;
 pub mod srdo;

@@ -210,6 +210,7 @@ fn dispatch(ev: Event, cbs: Callbacks) {
             }
         }
         Event::Emcc(..) => super::master::dispatch(ev),
+        Event::Pdo(commu_index) => super::pdo::dispatch(commu_index),
     }
 }
 

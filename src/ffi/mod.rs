@@ -8,6 +8,7 @@ pub mod driver;
 pub mod global;
 pub mod master;
 pub mod od_table;
+pub mod pdo;
 pub mod srdo;
 pub mod stack_callbacks;
 pub mod types;

@@ -1,0 +1,429 @@
+//! Unit tests of the PDO rules and the payload conversion, on a small
+//! dictionary declared here. Byte layouts follow CiA 301 §7.2.2 (mapping,
+//! LSB first) and §7.5.2.35–38 (parameter objects).
+
+use core::sync::atomic::AtomicU8;
+
+use super::decl::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
+use super::mapping::{Rules, check_entry, check_mapping, check_write, refuse};
+use super::*;
+use crate::od::{Access, DataType, NoHooks, ObdEntry, ObdSubEntry, decl as od_decl};
+
+static V1400: CommuVars = CommuVars::new();
+static D1400: CommuDefaults = CommuDefaults::new(0x8000_0200, 255, 0, 0);
+static S1400: [ObdSubEntry; 5] = commu_subs(&V1400, &D1400);
+static V1600: MappVars = MappVars::new();
+static D1600: MappDefaults = MappDefaults::new(&[0x2000_0108, 0x2000_0210]);
+static S1600: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1600, &D1600);
+static V1800: CommuVars = CommuVars::new();
+// The predefined connection set base: the node-ID is added.
+static D1800: CommuDefaults = CommuDefaults::new(0x180, 255, 0, 0);
+static S1800: [ObdSubEntry; 5] = commu_subs(&V1800, &D1800);
+static V1A00: MappVars = MappVars::new();
+static D1A00: MappDefaults = MappDefaults::new(&[0x2000_0108, 0x2000_0210, 0x2000_0320]);
+static S1A00: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1A00, &D1A00);
+
+static U8V: [AtomicU8; 1] = od_decl::zeroed();
+static U16V: [AtomicU8; 2] = od_decl::zeroed();
+static U32V: [AtomicU8; 4] = od_decl::zeroed();
+static B1: [AtomicU8; 1] = od_decl::zeroed();
+static PLAIN: [AtomicU8; 1] = od_decl::zeroed();
+static RO: [AtomicU8; 1] = od_decl::zeroed();
+static RANGED: [AtomicU8; 2] = od_decl::zeroed();
+static RANGED_LIMITS: [u8; 6] = {
+    let d = 0i16.to_ne_bytes();
+    let l = (-100i16).to_ne_bytes();
+    let h = 100i16.to_ne_bytes();
+    [d[0], d[1], l[0], l[1], h[0], h[1]]
+};
+static B2: [AtomicU8; 1] = od_decl::zeroed();
+static TEXT: [AtomicU8; 5] = od_decl::zeroed();
+static S2000: [ObdSubEntry; 10] = [
+    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[9]),
+    ObdSubEntry::ram(1, DataType::UInt8, Access::PRW, &U8V, None),
+    ObdSubEntry::ram(2, DataType::UInt16, Access::PRW, &U16V, None),
+    ObdSubEntry::ram(3, DataType::UInt32, Access::PRW, &U32V, None),
+    ObdSubEntry::ram(4, DataType::Bool, Access::PRW, &B1, None),
+    ObdSubEntry::ram(5, DataType::UInt8, Access::RW, &PLAIN, None),
+    ObdSubEntry::ram(6, DataType::UInt8, Access::PR, &RO, None),
+    ObdSubEntry::ram_range(7, DataType::Int16, Access::PRW, &RANGED, &RANGED_LIMITS),
+    ObdSubEntry::ram(8, DataType::Bool, Access::PRW, &B2, None),
+    ObdSubEntry::ram_string(9, Access::PRW, &TEXT, c""),
+];
+
+static SYNC_COB: [AtomicU8; 4] = od_decl::zeroed();
+static SYNC_COB_DEF: [u8; 4] = 0x80u32.to_ne_bytes();
+static SYNC_WINDOW: [AtomicU8; 4] = od_decl::zeroed();
+static S1005: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+    0,
+    DataType::UInt32,
+    Access::SRW,
+    &SYNC_COB,
+    Some(&SYNC_COB_DEF),
+)];
+static S1007: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+    0,
+    DataType::UInt32,
+    Access::SRW,
+    &SYNC_WINDOW,
+    Some(&[0; 4]),
+)];
+
+static GENERIC: [ObdEntry; 6] = [
+    ObdEntry::new(0x1005, &S1005, None),
+    ObdEntry::new(0x1007, &S1007, None),
+    ObdEntry::new(0x1400, &S1400, None),
+    ObdEntry::new(0x1600, &S1600, None),
+    ObdEntry::new(0x1800, &S1800, None),
+    ObdEntry::new(0x1A00, &S1A00, None),
+];
+static MANUFACTURER: [ObdEntry; 1] = [ObdEntry::new(0x2000, &S2000, None)];
+
+static SERIAL: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+/// The dictionary with its defaults restored (tests share its statics and
+/// hold the lock).
+fn fresh() -> (std::sync::MutexGuard<'static, ()>, ObjectDictionary) {
+    let g = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let od = ObjectDictionary::new(&GENERIC, &MANUFACTURER, &[]).unwrap();
+    od.restore_defaults(0x1000, 0xFFFF);
+    (g, od)
+}
+
+const BITS: Rules = Rules {
+    bit_mapping: true,
+    dummy: true,
+};
+const BYTES: Rules = Rules {
+    bit_mapping: false,
+    dummy: true,
+};
+
+#[test]
+fn entries_must_name_mappable_objects_of_the_right_length() {
+    let (_g, od) = fresh();
+    let tx = Direction::Tx;
+    let rx = Direction::Rx;
+    assert_eq!(check_entry(&od, tx, 0x2000_0108, BYTES), Ok(8));
+    assert_eq!(check_entry(&od, tx, 0x2000_0320, BYTES), Ok(32));
+    // CiA 301 §7.5.2.36 abort codes: object / subindex missing.
+    assert_eq!(
+        check_entry(&od, tx, 0x2100_0108, BYTES),
+        Err(refuse::NO_OBJECT)
+    );
+    assert_eq!(refuse::NO_OBJECT.abort, 0x0602_0000);
+    assert_eq!(
+        check_entry(&od, tx, 0x2000_1508, BYTES),
+        Err(refuse::NO_SUBINDEX)
+    );
+    assert_eq!(refuse::NO_SUBINDEX.abort, 0x0609_0011);
+    // Not kObdAccPdo: 0x06040041.
+    assert_eq!(
+        check_entry(&od, tx, 0x2000_0508, BYTES),
+        Err(refuse::NOT_MAPPABLE)
+    );
+    assert_eq!(refuse::NOT_MAPPABLE.abort, 0x0604_0041);
+    // Read-only: fine for a TPDO, not for an RPDO.
+    assert_eq!(check_entry(&od, tx, 0x2000_0608, BYTES), Ok(8));
+    assert_eq!(
+        check_entry(&od, rx, 0x2000_0608, BYTES),
+        Err(refuse::NOT_MAPPABLE)
+    );
+    // Length must be the type's.
+    assert_eq!(
+        check_entry(&od, tx, 0x2000_0210, BYTES),
+        Ok(16),
+        "UNSIGNED16 with 16 bits"
+    );
+    assert_eq!(
+        check_entry(&od, tx, 0x2000_0208, BYTES),
+        Err(refuse::NOT_MAPPABLE)
+    );
+    assert_eq!(
+        check_entry(&od, tx, 0x2000_020C, BYTES),
+        Err(refuse::GRANULARITY)
+    );
+    assert_eq!(
+        check_entry(&od, tx, 0x2000_020C, BITS),
+        Err(refuse::NOT_MAPPABLE)
+    );
+    assert_eq!(
+        check_entry(&od, tx, 0x2000_0148, BYTES),
+        Err(refuse::LENGTH),
+        "72 bits"
+    );
+    // Strings are not mappable here.
+    assert_eq!(
+        check_entry(&od, tx, 0x2000_0928, BYTES),
+        Err(refuse::NOT_MAPPABLE)
+    );
+    assert_eq!(check_entry(&od, tx, 0, BYTES), Err(refuse::NOT_MAPPABLE));
+}
+
+#[test]
+fn boolean_bit_mapping_depends_on_the_switch() {
+    let (_g, od) = fresh();
+    // seed 003 ch. 4: PDO_USE_BIT_MAPPING allows BOOLEANs as single bits.
+    assert_eq!(check_entry(&od, Direction::Tx, 0x2000_0401, BITS), Ok(1));
+    assert_eq!(
+        check_entry(&od, Direction::Tx, 0x2000_0401, BYTES),
+        Err(refuse::GRANULARITY)
+    );
+    assert_eq!(
+        refuse::GRANULARITY.kernel,
+        CopKernel::PdoGranularityMismatch
+    );
+    // A BOOLEAN as a whole byte is always accepted.
+    assert_eq!(check_entry(&od, Direction::Rx, 0x2000_0408, BYTES), Ok(8));
+}
+
+#[test]
+fn dummy_entries_only_in_rpdos() {
+    let (_g, od) = fresh();
+    // CiA 301 §7.5.2.36: 0x00050008 maps an UNSIGNED8 place holder.
+    assert_eq!(check_entry(&od, Direction::Rx, 0x0005_0008, BYTES), Ok(8));
+    assert_eq!(check_entry(&od, Direction::Rx, 0x0007_0020, BYTES), Ok(32));
+    assert_eq!(check_entry(&od, Direction::Rx, 0x0001_0001, BITS), Ok(1));
+    assert_eq!(
+        check_entry(&od, Direction::Tx, 0x0005_0008, BYTES),
+        Err(refuse::NOT_MAPPABLE)
+    );
+    let no_dummy = Rules {
+        bit_mapping: false,
+        dummy: false,
+    };
+    assert_eq!(
+        check_entry(&od, Direction::Rx, 0x0005_0008, no_dummy),
+        Err(refuse::NOT_MAPPABLE)
+    );
+    assert_eq!(
+        check_entry(&od, Direction::Rx, 0x0005_0010, BYTES),
+        Err(refuse::NOT_MAPPABLE),
+        "length of an UNSIGNED8 place holder"
+    );
+}
+
+#[test]
+fn a_mapping_carries_at_most_64_bits() {
+    let (_g, od) = fresh();
+    let tx = Direction::Tx;
+    assert_eq!(
+        check_mapping(&od, tx, &[0x2000_0320, 0x2000_0320], BYTES),
+        Ok(64)
+    );
+    let e = check_mapping(&od, tx, &[0x2000_0320, 0x2000_0320, 0x2000_0108], BYTES);
+    assert_eq!(e, Err(refuse::LENGTH));
+    assert_eq!(refuse::LENGTH.abort, 0x0604_0042);
+    let many = [0x2000_0108u32; PDO_MAX_MAPPENTRIES + 1];
+    assert_eq!(check_mapping(&od, tx, &many, BITS), Err(refuse::LENGTH));
+}
+
+fn write(od: &ObjectDictionary, index: u16, sub: u8, v: u64) -> Result<(), OdError> {
+    let obj = od.find(index, sub)?;
+    let wire = obj.data_type().wire_size().unwrap_or(4);
+    let bytes = v.to_le_bytes();
+    let staged = od.stage(&obj, ByteOrder::Wire, &bytes[..wire])?;
+    check_write(od, &obj, &staged, BITS)?;
+    od.write(index, sub, ByteOrder::Wire, &bytes[..wire], &mut NoHooks)
+}
+
+#[test]
+fn cia301_mapping_procedure() {
+    let (_g, od) = fresh();
+    od.poke_uint(0x1800, 1, 0x181).unwrap();
+    // Step 1 missing: the PDO is valid, the mapping stays as it is.
+    assert_eq!(write(&od, 0x1A00, 0, 0), Err(refuse::STATE));
+    assert_eq!(refuse::STATE.abort, 0x0800_0022);
+    assert_eq!(od.read_uint(0x1A00, 0), Ok(3));
+    // Step 1: destroy the PDO.
+    write(&od, 0x1800, 1, 0x8000_0181).unwrap();
+    // Step 3 before step 2: sub 0 is not 0.
+    assert_eq!(write(&od, 0x1A00, 1, 0x2000_0210), Err(refuse::STATE));
+    // Step 2, then step 3 with one bad and one good entry.
+    write(&od, 0x1A00, 0, 0).unwrap();
+    assert_eq!(
+        write(&od, 0x1A00, 1, 0x2000_0508),
+        Err(refuse::NOT_MAPPABLE)
+    );
+    assert_eq!(od.read_uint(0x1A00, 1), Ok(0x2000_0108), "unchanged");
+    write(&od, 0x1A00, 1, 0x2000_0320).unwrap();
+    write(&od, 0x1A00, 2, 0x2000_0320).unwrap();
+    write(&od, 0x1A00, 3, 0x2000_0108).unwrap();
+    // Step 4: three entries would be 72 bits.
+    assert_eq!(write(&od, 0x1A00, 0, 3), Err(refuse::LENGTH));
+    assert_eq!(write(&od, 0x1A00, 0, 9), Err(refuse::LENGTH));
+    assert_eq!(od.read_uint(0x1A00, 0), Ok(0));
+    write(&od, 0x1A00, 0, 2).unwrap();
+    // Step 5: create the PDO again.
+    write(&od, 0x1800, 1, 0x181).unwrap();
+    assert_eq!(od.read_uint(0x1800, 1), Ok(0x181));
+}
+
+#[test]
+fn communication_parameter_rules() {
+    let (_g, od) = fresh();
+    // TPDO valid with 0x181.
+    od.poke_uint(0x1800, 1, 0x181).unwrap();
+    // CiA 301 §7.5.2.37: the identifier does not change while valid.
+    assert_eq!(write(&od, 0x1800, 1, 0x182), Err(refuse::INVALID));
+    assert_eq!(refuse::INVALID.abort, 0x0609_0030);
+    write(&od, 0x1800, 1, 0x181).unwrap();
+    // Inhibit time only while invalid.
+    assert_eq!(write(&od, 0x1800, 3, 10), Err(refuse::INVALID));
+    // Transmission types 241..=251 are reserved.
+    assert_eq!(write(&od, 0x1800, 2, 241), Err(refuse::INVALID));
+    write(&od, 0x1800, 2, 252).unwrap();
+    write(&od, 0x1800, 5, 100).unwrap();
+    // Invalid: the identifier and the inhibit time may change.
+    write(&od, 0x1800, 1, 0x8000_0181).unwrap();
+    write(&od, 0x1800, 3, 10).unwrap();
+    // Restricted identifiers (CiA 301 §7.3.5) cannot be made valid.
+    for bad in [0x701u64, 0x601, 0x000, 0x7FF, 0x800] {
+        assert_eq!(write(&od, 0x1800, 1, bad), Err(refuse::INVALID), "{bad:#x}");
+    }
+    // 29-bit identifiers need a CAN 2.0B driver.
+    let ext = write(&od, 0x1800, 1, 0x2000_0181);
+    assert_eq!(ext.is_ok(), crate::config::CDRV_CAN20B);
+    // RPDOs: 252/253 are reserved.
+    assert_eq!(write(&od, 0x1400, 2, 252), Err(refuse::INVALID));
+    write(&od, 0x1400, 2, 0).unwrap();
+    write(&od, 0x1400, 2, 254).unwrap();
+}
+
+#[test]
+fn a_pdo_cannot_become_valid_with_a_bad_default_mapping() {
+    let (_g, od) = fresh();
+    od.poke_uint(0x1600, 1, 0x2000_0508).unwrap(); // not mappable
+    assert_eq!(write(&od, 0x1400, 1, 0x201), Err(refuse::NOT_MAPPABLE));
+    od.poke_uint(0x1600, 1, 0x2000_0108).unwrap();
+    write(&od, 0x1400, 1, 0x201).unwrap();
+}
+
+#[test]
+fn sync_cob_id_rules() {
+    let (_g, od) = fresh();
+    // CiA 301 §7.5.2.5: bit 30 = "generate SYNC"; this library only
+    // consumes, so it is refused with 0x06090030.
+    assert_eq!(write(&od, 0x1005, 0, 0x4000_0080), Err(refuse::INVALID));
+    assert_eq!(write(&od, 0x1005, 0, 0x701), Err(refuse::INVALID));
+    assert_eq!(od.read_uint(0x1005, 0), Ok(0x80));
+    // Bit 31 is "do not care".
+    write(&od, 0x1005, 0, 0x8000_0081).unwrap();
+    write(&od, 0x1005, 0, 0x81).unwrap();
+    write(&od, 0x1007, 0, 5000).unwrap();
+}
+
+fn channel(od: &ObjectDictionary, dir: Direction, entries: &[u32]) -> Channel {
+    let mut ch = Channel::new();
+    ch.cfg.present = true;
+    ch.cfg.cob = Some(CanId::std_masked(0x181));
+    ch.cfg.count = entries.len();
+    for (d, s) in ch.cfg.entries.iter_mut().zip(entries) {
+        *d = *s;
+    }
+    ch.cfg.total_bits = check_mapping(od, dir, entries, BITS).unwrap();
+    ch.cfg.mapping_ok = true;
+    ch
+}
+
+#[test]
+fn tpdo_payload_is_packed_lsb_first() {
+    let (_g, od) = fresh();
+    od.poke_uint(0x2000, 1, 0xAB).unwrap();
+    od.poke_uint(0x2000, 2, 0x1234).unwrap();
+    od.poke_uint(0x2000, 3, 0xDEAD_BEEF).unwrap();
+    let ch = channel(&od, Direction::Tx, &[0x2000_0108, 0x2000_0210, 0x2000_0320]);
+    let p = sample(&od, &ch).unwrap();
+    // CiA 301 §7.2.2: objects in mapping order, each little-endian.
+    assert_eq!(p.bytes(), &[0xAB, 0x34, 0x12, 0xEF, 0xBE, 0xAD, 0xDE]);
+
+    // Bits: BOOLEAN 1, BOOLEAN 0, then the UNSIGNED8 from bit 2.
+    od.poke_uint(0x2000, 4, 1).unwrap();
+    od.poke_uint(0x2000, 8, 0).unwrap();
+    let ch = channel(&od, Direction::Tx, &[0x2000_0401, 0x2000_0801, 0x2000_0108]);
+    let p = sample(&od, &ch).unwrap();
+    assert_eq!(p.bytes(), &[0b1010_1101, 0b10]);
+}
+
+#[test]
+fn rpdo_payload_reaches_all_variables_or_none() {
+    let (_g, od) = fresh();
+    let ch = channel(
+        &od,
+        Direction::Rx,
+        &[0x2000_0108, 0x0005_0008, 0x2000_0210, 0x2000_0710],
+    );
+    let good = Payload {
+        data: [0x11, 0xFF, 0x22, 0x33, 0x9C, 0xFF, 0, 0], // -100
+        len: 6,
+    };
+    apply(&od, &ch, &good).unwrap();
+    assert_eq!(od.read_uint(0x2000, 1), Ok(0x11));
+    assert_eq!(od.read_uint(0x2000, 2), Ok(0x3322));
+    assert_eq!(od.read_uint(0x2000, 7), Ok(0xFF9C));
+    // 0x2000 sub 7 allows -100..=100: 101 makes the whole PDO be dropped.
+    let bad = Payload {
+        data: [0x55, 0, 0x66, 0x77, 101, 0, 0, 0],
+        len: 6,
+    };
+    assert_eq!(apply(&od, &ch, &bad), Err(CopKernel::PdoErrorPdoDecode));
+    assert_eq!(od.read_uint(0x2000, 1), Ok(0x11), "first object untouched");
+    assert_eq!(od.read_uint(0x2000, 2), Ok(0x3322));
+    // A BOOLEAN byte must be 0 or 1.
+    let ch = channel(&od, Direction::Rx, &[0x2000_0108, 0x2000_0408]);
+    let bad = Payload {
+        data: [0x42, 2, 0, 0, 0, 0, 0, 0],
+        len: 2,
+    };
+    assert!(apply(&od, &ch, &bad).is_err());
+    assert_eq!(od.read_uint(0x2000, 1), Ok(0x11));
+}
+
+#[test]
+fn rpdo_bits_unpack() {
+    let (_g, od) = fresh();
+    let ch = channel(&od, Direction::Rx, &[0x2000_0401, 0x0001_0001, 0x2000_0801]);
+    let p = Payload {
+        data: [0b101, 0, 0, 0, 0, 0, 0, 0],
+        len: 1,
+    };
+    apply(&od, &ch, &p).unwrap();
+    assert_eq!(od.read_uint(0x2000, 4), Ok(1));
+    assert_eq!(od.read_uint(0x2000, 8), Ok(1));
+}
+
+#[test]
+fn predefined_connection_set_gets_the_node_id() {
+    let (_g, od) = fresh();
+    predefined_node_id(&od, Direction::Tx, 0, 5);
+    assert_eq!(od.read_uint(0x1800, 1), Ok(0x185));
+    // Only once: 0x185 is no longer the default.
+    predefined_node_id(&od, Direction::Tx, 0, 5);
+    assert_eq!(od.read_uint(0x1800, 1), Ok(0x185));
+    // Flags stay: the invalid RPDO 1 default 0x80000200.
+    predefined_node_id(&od, Direction::Rx, 0, 5);
+    assert_eq!(od.read_uint(0x1400, 1), Ok(0x8000_0205));
+    od.poke_uint(0x1400, 1, 0x8000_0207).unwrap();
+    predefined_node_id(&od, Direction::Rx, 0, 5);
+    assert_eq!(
+        od.read_uint(0x1400, 1),
+        Ok(0x8000_0207),
+        "written value kept"
+    );
+}
+
+#[test]
+fn pdo_index_decoding() {
+    let p = PdoIndex::of(0x1A05).unwrap();
+    assert_eq!((p.dir, p.role, p.number), (Direction::Tx, Role::Mapp, 5));
+    assert_eq!((p.commu(), p.mapp()), (0x1805, 0x1A05));
+    let p = PdoIndex::of(0x15FF).unwrap();
+    assert_eq!(
+        (p.dir, p.role, p.number),
+        (Direction::Rx, Role::Commu, 0x1FF)
+    );
+    assert_eq!(PdoIndex::of(0x1C00), None);
+    assert!(handles(0x1005) && handles(0x1007) && handles(0x1BFF));
+    assert!(!handles(0x1008) && !handles(0x13FF) && !handles(0x1C00));
+    assert_eq!(PDO_MAX_MAPPENTRIES, 8, "granularity 8 (SYSTEC_API.md §9b)");
+}
