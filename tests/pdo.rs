@@ -1,0 +1,980 @@
+//! Whole-stack tests of the PDO service and the SYNC consumer: two nodes
+//! (`cop::ccm::Stack`) with Rust-declared dictionaries on the simulated
+//! bus. Node A (ID 1) produces from its inputs 0x2000, node B (ID 2)
+//! consumes into its outputs 0x2001. Payload layouts follow CiA 301 §7.2.2
+//! (mapped objects in order, each little-endian, bit 0 of byte 0 first);
+//! parameter rules follow CiA 301 §7.5.2.35–38; SYNC §7.2.5 and 0x1005–0x1007
+//! §7.5.2.5–7; emergency codes CiA 301 table 21.
+
+use core::sync::atomic::AtomicU8;
+
+use cop::ccm::{NmtCommand, Stack};
+use cop::error::{CopKernel, OdError};
+use cop::event::{Event, NmtState};
+use cop::od::{Access, ByteOrder, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
+use cop::pdo::decl::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
+use cop::pdo::{Direction, PDO_MAX_MAPPENTRIES, PdoParam, StaticPdoParam};
+use cop::port::{CanFrame, CanId, Ticks};
+use cop::sim::{SimBus, SimPort};
+use cop::wire::pdo::encode_sync;
+
+const fn limits_i16(default: i16, low: i16, high: i16) -> [u8; 6] {
+    let d = default.to_ne_bytes();
+    let l = low.to_ne_bytes();
+    let h = high.to_ne_bytes();
+    [d[0], d[1], l[0], l[1], h[0], h[1]]
+}
+
+/// One node's dictionary: error register, SYNC objects, EMCY COB-ID, two
+/// RPDOs and two TPDOs, inputs 0x2000 and outputs 0x2001 of the same shape
+/// (1 U8, 2 U16, 3 U32, 4-6 BOOLEAN, 7 INTEGER16 in -100..=100, 8 U8 not
+/// mappable, 9 U8 read-only mappable).
+macro_rules! node_dictionary {
+    ($name:ident) => {
+        mod $name {
+            use super::*;
+
+            static ERR_REG: [AtomicU8; 1] = decl::zeroed();
+            static S1001: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+                0,
+                DataType::UInt8,
+                Access::R,
+                &ERR_REG,
+                Some(&[0]),
+            )];
+            static SYNC_COB: [AtomicU8; 4] = decl::zeroed();
+            static SYNC_COB_DEF: [u8; 4] = 0x80u32.to_ne_bytes();
+            static S1005: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+                0,
+                DataType::UInt32,
+                Access::SRW,
+                &SYNC_COB,
+                Some(&SYNC_COB_DEF),
+            )];
+            static CYCLE: [AtomicU8; 4] = decl::zeroed();
+            static S1006: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+                0,
+                DataType::UInt32,
+                Access::SRW,
+                &CYCLE,
+                Some(&[0; 4]),
+            )];
+            static WINDOW: [AtomicU8; 4] = decl::zeroed();
+            static S1007: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+                0,
+                DataType::UInt32,
+                Access::SRW,
+                &WINDOW,
+                Some(&[0; 4]),
+            )];
+            static EMCY_COB: [AtomicU8; 4] = decl::zeroed();
+            static EMCY_COB_DEF: [u8; 4] = 0x80u32.to_ne_bytes();
+            static S1014: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+                0,
+                DataType::UInt32,
+                Access::SRW,
+                &EMCY_COB,
+                Some(&EMCY_COB_DEF),
+            )];
+
+            static V1400: CommuVars = CommuVars::new();
+            static D1400: CommuDefaults = CommuDefaults::new(0x8000_0200, 255, 0, 0);
+            static S1400: [ObdSubEntry; 5] = commu_subs(&V1400, &D1400);
+            static V1401: CommuVars = CommuVars::new();
+            static D1401: CommuDefaults = CommuDefaults::new(0x8000_0300, 0, 0, 0);
+            static S1401: [ObdSubEntry; 5] = commu_subs(&V1401, &D1401);
+            static V1600: MappVars = MappVars::new();
+            static D1600: MappDefaults =
+                MappDefaults::new(&[0x2001_0108, 0x2001_0210, 0x2001_0320]);
+            static S1600: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1600, &D1600);
+            static V1601: MappVars = MappVars::new();
+            static D1601: MappDefaults = MappDefaults::new(&[]);
+            static S1601: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1601, &D1601);
+            static V1800: CommuVars = CommuVars::new();
+            static D1800: CommuDefaults = CommuDefaults::new(0x180, 255, 0, 0);
+            static S1800: [ObdSubEntry; 5] = commu_subs(&V1800, &D1800);
+            static V1801: CommuVars = CommuVars::new();
+            static D1801: CommuDefaults = CommuDefaults::new(0x8000_0280, 1, 0, 0);
+            static S1801: [ObdSubEntry; 5] = commu_subs(&V1801, &D1801);
+            static V1A00: MappVars = MappVars::new();
+            static D1A00: MappDefaults =
+                MappDefaults::new(&[0x2000_0108, 0x2000_0210, 0x2000_0320]);
+            static S1A00: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1A00, &D1A00);
+            static V1A01: MappVars = MappVars::new();
+            static D1A01: MappDefaults = MappDefaults::new(&[]);
+            static S1A01: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1A01, &D1A01);
+
+            static IN: [[AtomicU8; 4]; 9] = [const { decl::zeroed() }; 9];
+            static OUT: [[AtomicU8; 4]; 9] = [const { decl::zeroed() }; 9];
+            static RANGE: [u8; 6] = limits_i16(0, -100, 100);
+
+            const fn record(v: &'static [[AtomicU8; 4]; 9]) -> [ObdSubEntry; 10] {
+                [
+                    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[9]),
+                    ObdSubEntry::ram(1, DataType::UInt8, Access::PRW, v[0].split_at(1).0, None),
+                    ObdSubEntry::ram(2, DataType::UInt16, Access::PRW, v[1].split_at(2).0, None),
+                    ObdSubEntry::ram(3, DataType::UInt32, Access::PRW, &v[2], None),
+                    ObdSubEntry::ram(4, DataType::Bool, Access::PRW, v[3].split_at(1).0, None),
+                    ObdSubEntry::ram(5, DataType::Bool, Access::PRW, v[4].split_at(1).0, None),
+                    ObdSubEntry::ram(6, DataType::Bool, Access::PRW, v[5].split_at(1).0, None),
+                    ObdSubEntry::ram_range(
+                        7,
+                        DataType::Int16,
+                        Access::PRW,
+                        v[6].split_at(2).0,
+                        &RANGE,
+                    ),
+                    ObdSubEntry::ram(8, DataType::UInt8, Access::RW, v[7].split_at(1).0, None),
+                    ObdSubEntry::ram(9, DataType::UInt8, Access::PR, v[8].split_at(1).0, None),
+                ]
+            }
+            static S2000: [ObdSubEntry; 10] = record(&IN);
+            static S2001: [ObdSubEntry; 10] = record(&OUT);
+
+            static GENERIC: [ObdEntry; 13] = [
+                ObdEntry::new(0x1001, &S1001, None),
+                ObdEntry::new(0x1005, &S1005, None),
+                ObdEntry::new(0x1006, &S1006, None),
+                ObdEntry::new(0x1007, &S1007, None),
+                ObdEntry::new(0x1014, &S1014, None),
+                ObdEntry::new(0x1400, &S1400, None),
+                ObdEntry::new(0x1401, &S1401, None),
+                ObdEntry::new(0x1600, &S1600, None),
+                ObdEntry::new(0x1601, &S1601, None),
+                ObdEntry::new(0x1800, &S1800, None),
+                ObdEntry::new(0x1801, &S1801, None),
+                ObdEntry::new(0x1A00, &S1A00, None),
+                ObdEntry::new(0x1A01, &S1A01, None),
+            ];
+            static MANUFACTURER: [ObdEntry; 2] = [
+                ObdEntry::new(0x2000, &S2000, None),
+                ObdEntry::new(0x2001, &S2001, None),
+            ];
+
+            pub fn od() -> ObjectDictionary {
+                // Application objects are zeroed explicitly: they have no
+                // defaults and the statics outlive a test.
+                for v in IN.iter().chain(OUT.iter()) {
+                    decl::set(v, [0; 4]);
+                }
+                ObjectDictionary::new(&GENERIC, &MANUFACTURER, &[]).unwrap()
+            }
+        }
+    };
+}
+
+node_dictionary!(node_a);
+node_dictionary!(node_b);
+
+/// The dictionaries are statics shared by every test of this file.
+static SERIAL: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+struct Node {
+    stack: Stack,
+    port: SimPort,
+    events: Vec<Event>,
+}
+
+impl Node {
+    fn new(bus: &SimBus, od: ObjectDictionary, id: u8) -> Node {
+        let mut n = Node {
+            stack: Stack::new(od, id).unwrap(),
+            port: bus.attach(64),
+            events: Vec::new(),
+        };
+        n.drain();
+        n.stack.connect().unwrap();
+        n.drain();
+        n
+    }
+
+    fn now(&self) -> Ticks {
+        self.port.bus().now()
+    }
+
+    fn drain(&mut self) {
+        let now = self.now();
+        while let Some(e) = self.stack.drain(&mut self.port, now) {
+            self.events.push(e);
+        }
+    }
+
+    fn cycle(&mut self) {
+        let now = self.now();
+        let mut ev = Vec::new();
+        self.stack.process(&mut self.port, now, |_, e| ev.push(e));
+        self.events.extend(ev);
+    }
+
+    fn command(&mut self, cmd: NmtCommand) {
+        self.stack.exec_command(cmd).unwrap();
+        self.drain();
+    }
+
+    fn write(&mut self, index: u16, sub: u8, v: u64, len: usize) -> Result<(), OdError> {
+        let now = self.now();
+        let bytes = v.to_le_bytes();
+        let r = self
+            .stack
+            .write_object(index, sub, ByteOrder::Wire, &bytes[..len], now);
+        self.drain();
+        r
+    }
+
+    fn read(&self, index: u16, sub: u8) -> u64 {
+        self.stack.od().read_uint(index, sub).unwrap()
+    }
+
+    fn define(&mut self, p: &PdoParam<'_>) -> Result<(), CopKernel> {
+        let now = self.now();
+        let r = self.stack.define_pdo(p, now);
+        self.drain();
+        r
+    }
+
+    /// Defines a PDO completely, with callback.
+    fn pdo(&mut self, commu: u16, cob: u32, tx_type: u8, inhibit: u16, event: u16, map: &[u32]) {
+        let dir = if commu >= 0x1800 {
+            Direction::Tx
+        } else {
+            Direction::Rx
+        };
+        self.define(&PdoParam {
+            cob_id: Some(cob),
+            tx_type: Some(tx_type),
+            inhibit_time: Some(inhibit),
+            event_time: Some(event),
+            entry_count: Some(map.len() as u8),
+            entries: Some(map),
+            notify: Some(true),
+            ..PdoParam::new(commu, dir)
+        })
+        .unwrap();
+    }
+
+    fn pdo_events(&mut self) -> Vec<u16> {
+        let v = self
+            .events
+            .iter()
+            .filter_map(|e| match e {
+                Event::Pdo(i) => Some(*i),
+                _ => None,
+            })
+            .collect();
+        self.events.clear();
+        v
+    }
+}
+
+struct Net {
+    bus: SimBus,
+    a: Node,
+    b: Node,
+    _guard: std::sync::MutexGuard<'static, ()>,
+}
+
+impl Net {
+    /// Both nodes PRE-OPERATIONAL, A's TPDO 1 (0x181, type 255, inputs
+    /// 1..3) and B's RPDO 1 (0x181, outputs 1..3) linked, trace empty.
+    fn new() -> Net {
+        let guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+        let bus = SimBus::new();
+        let a = Node::new(&bus, node_a::od(), 1);
+        let b = Node::new(&bus, node_b::od(), 2);
+        let mut net = Net {
+            bus,
+            a,
+            b,
+            _guard: guard,
+        };
+        // Predefined connection set: TPDO 1 of node 1 is 0x181.
+        assert_eq!(net.a.read(0x1800, 1), 0x181);
+        net.b.write(0x1400, 1, 0x181, 4).unwrap();
+        net.bus.clear_trace();
+        net
+    }
+
+    fn start(&mut self) {
+        self.a.command(NmtCommand::StartRemoteNode);
+        self.b.command(NmtCommand::StartRemoteNode);
+        assert_eq!(self.a.stack.nmt_state(), NmtState::Operational);
+        self.a.events.clear();
+        self.b.events.clear();
+    }
+
+    /// Advances the bus by `ms` milliseconds, one cycle per node and ms.
+    fn run(&mut self, ms: u32) {
+        for _ in 0..ms {
+            self.bus.advance_ms(1);
+            self.a.cycle();
+            self.b.cycle();
+        }
+    }
+
+    /// One cycle per node without advancing the time.
+    fn step(&mut self) {
+        self.a.cycle();
+        self.b.cycle();
+    }
+
+    fn sync(&mut self) {
+        self.bus.inject(encode_sync(CanId::std_masked(0x80), None));
+        self.step();
+    }
+
+    /// (time, payload) of every frame with identifier `id` so far.
+    fn frames(&self, id: u32) -> Vec<(u32, Vec<u8>)> {
+        self.bus
+            .sent()
+            .into_iter()
+            .filter(|(_, _, f)| f.id.id() == id && !f.rtr)
+            .map(|(_, t, f)| (t.0, f.payload().to_vec()))
+            .collect()
+    }
+}
+
+fn set_inputs(n: &mut Node, u8v: u8, u16v: u16, u32v: u32) {
+    n.write(0x2000, 1, u64::from(u8v), 1).unwrap();
+    n.write(0x2000, 2, u64::from(u16v), 2).unwrap();
+    n.write(0x2000, 3, u64::from(u32v), 4).unwrap();
+}
+
+fn outputs(n: &Node) -> (u64, u64, u64) {
+    (n.read(0x2001, 1), n.read(0x2001, 2), n.read(0x2001, 3))
+}
+
+#[test]
+fn event_driven_tpdo_reaches_the_rpdo_variables() {
+    let mut net = Net::new();
+    net.a
+        .define(&PdoParam {
+            notify: Some(true),
+            ..PdoParam::new(0x1800, Direction::Tx)
+        })
+        .unwrap();
+    net.b
+        .define(&PdoParam {
+            notify: Some(true),
+            ..PdoParam::new(0x1400, Direction::Rx)
+        })
+        .unwrap();
+    net.start();
+    set_inputs(&mut net.a, 0x12, 0x3456, 0x789A_BCDE);
+    net.run(5);
+    assert!(net.frames(0x181).is_empty(), "type 255 waits for an event");
+    net.a.stack.signal_pdo(0x1800).unwrap();
+    net.run(1);
+    // CiA 301 §7.2.2: U8, U16, U32 in mapping order, little-endian.
+    assert_eq!(
+        net.frames(0x181),
+        vec![(60, vec![0x12, 0x56, 0x34, 0xDE, 0xBC, 0x9A, 0x78])]
+    );
+    assert_eq!(outputs(&net.b), (0x12, 0x3456, 0x789A_BCDE));
+    assert_eq!(net.a.pdo_events(), vec![0x1800]);
+    assert_eq!(net.b.pdo_events(), vec![0x1400]);
+    net.run(5);
+    assert_eq!(net.frames(0x181).len(), 1, "one event, one PDO");
+}
+
+#[test]
+fn signal_by_object_and_check_var() {
+    let mut net = Net::new();
+    net.start();
+    assert_eq!(
+        net.a.stack.signal_object(0x2000, 8),
+        Err(CopKernel::PdoVarNotFound)
+    );
+    set_inputs(&mut net.a, 1, 2, 3);
+    net.a.stack.signal_object(0x2000, 2).unwrap();
+    net.run(1);
+    assert_eq!(net.frames(0x181).len(), 1);
+    // Nothing changed: CcmSignalCheckVar sends nothing.
+    net.a.stack.signal_check_var();
+    net.run(2);
+    assert_eq!(net.frames(0x181).len(), 1);
+    // A changed input: sent once.
+    net.a.write(0x2000, 3, 4, 4).unwrap();
+    net.a.stack.signal_check_var();
+    net.run(2);
+    let f = net.frames(0x181);
+    assert_eq!(f.len(), 2);
+    assert_eq!(f[1].1, vec![1, 2, 0, 4, 0, 0, 0]);
+    assert_eq!(outputs(&net.b), (1, 2, 4));
+}
+
+#[test]
+fn signal_by_variable_address() {
+    let mut net = Net::new();
+    net.start();
+    let obj = net.a.stack.od().find(0x2000, 2).unwrap();
+    let addr = match obj.storage().unwrap() {
+        cop::od::Storage::Ram(m) => m.as_ptr() as usize,
+        _ => unreachable!(),
+    };
+    net.a.stack.signal_var_at(addr).unwrap();
+    net.run(1);
+    assert_eq!(net.frames(0x181).len(), 1);
+    assert_eq!(
+        net.a.stack.signal_var_at(addr + 1000),
+        Err(CopKernel::PdoVarNotFound)
+    );
+}
+
+#[test]
+fn inhibit_time_spaces_event_driven_transmissions() {
+    let mut net = Net::new();
+    // 100 x 100 µs = 10 ms.
+    net.a.pdo(0x1800, 0x181, 255, 100, 0, &[0x2000_0108]);
+    net.start();
+    net.a.stack.signal_pdo(0x1800).unwrap();
+    net.run(1);
+    net.a.write(0x2000, 1, 7, 1).unwrap();
+    net.a.stack.signal_pdo(0x1800).unwrap();
+    net.run(15);
+    let f = net.frames(0x181);
+    assert_eq!(f.len(), 2);
+    assert_eq!(
+        f[1].0 - f[0].0,
+        100,
+        "second PDO exactly one inhibit time later"
+    );
+    assert_eq!(f[1].1, vec![7], "with the data at the time of sending");
+    // Several events during the inhibit time give one transmission, one
+    // inhibit time after the previous one.
+    for _ in 0..5 {
+        net.a.stack.signal_pdo(0x1800).unwrap();
+        net.run(1);
+    }
+    net.run(20);
+    let f = net.frames(0x181);
+    assert_eq!(f.len(), 3);
+    assert_eq!(f[2].0 - f[1].0, 100);
+}
+
+#[test]
+fn event_timer_sends_periodically_and_restarts_on_events() {
+    let mut net = Net::new();
+    net.a.pdo(0x1800, 0x181, 254, 0, 20, &[0x2000_0108]);
+    net.start();
+    net.run(100);
+    let times: Vec<u32> = net.frames(0x181).iter().map(|f| f.0).collect();
+    assert_eq!(times, vec![200, 400, 600, 800, 1000]);
+    // Times are ticks of 100 µs. An event at 150 ms (sent in the cycle at
+    // 151 ms) restarts the timer: the next PDO comes at 171 ms, not 160.
+    net.run(50);
+    net.a.stack.signal_pdo(0x1800).unwrap();
+    net.run(21);
+    let times: Vec<u32> = net.frames(0x181).iter().map(|f| f.0).collect();
+    assert_eq!(times[5..], [1200, 1400, 1510, 1710]);
+}
+
+#[test]
+fn cyclic_sync_tpdo_and_synchronous_rpdo() {
+    let mut net = Net::new();
+    // A: TPDO 2 every 2nd SYNC. B: RPDO 2 synchronous (type 0).
+    net.a.pdo(0x1801, 0x281, 2, 0, 0, &[0x2000_0108]);
+    net.b.pdo(0x1401, 0x281, 0, 0, 0, &[0x2001_0108]);
+    net.start();
+    net.a.write(0x2000, 1, 5, 1).unwrap();
+    net.run(10);
+    net.sync(); // SYNC 1
+    assert!(net.frames(0x281).is_empty());
+    net.run(10);
+    net.sync(); // SYNC 2: A sends, B keeps the data until the next SYNC
+    assert_eq!(net.frames(0x281), vec![(200, vec![5])]);
+    assert_eq!(net.b.read(0x2001, 1), 0);
+    assert!(net.b.pdo_events().is_empty());
+    net.a.write(0x2000, 1, 6, 1).unwrap();
+    net.run(10);
+    net.sync(); // SYNC 3: B actuates 5; A silent
+    assert_eq!(net.b.read(0x2001, 1), 5);
+    assert_eq!(net.b.pdo_events(), vec![0x1401]);
+    assert_eq!(net.frames(0x281).len(), 1);
+    net.run(10);
+    net.sync(); // SYNC 4: A sends 6
+    assert_eq!(net.frames(0x281)[1], (400, vec![6]));
+    net.run(10);
+    net.sync();
+    assert_eq!(net.b.read(0x2001, 1), 6);
+}
+
+#[test]
+fn acyclic_sync_tpdo_waits_for_sync_after_an_event() {
+    let mut net = Net::new();
+    net.a.pdo(0x1801, 0x281, 0, 0, 0, &[0x2000_0108]);
+    net.start();
+    net.sync();
+    assert!(net.frames(0x281).is_empty(), "no event, nothing on SYNC");
+    net.a.stack.signal_pdo(0x1801).unwrap();
+    net.run(10);
+    assert!(net.frames(0x281).is_empty(), "type 0 waits for the SYNC");
+    net.sync();
+    assert_eq!(net.frames(0x281).len(), 1);
+    net.run(10);
+    net.sync();
+    assert_eq!(net.frames(0x281).len(), 1, "one event, one PDO");
+}
+
+#[test]
+fn sync_window_discards_late_synchronous_pdos() {
+    let mut net = Net::new();
+    net.a.pdo(0x1801, 0x281, 1, 0, 0, &[0x2000_0108]);
+    // 500 µs window (CiA 301 §7.5.2.7).
+    net.a.write(0x1007, 0, 500, 4).unwrap();
+    net.start();
+    // The SYNC is processed 1 ms after it arrived: too late.
+    net.bus.inject(encode_sync(CanId::std_masked(0x80), None));
+    net.run(1);
+    assert!(net.frames(0x281).is_empty());
+    // In time.
+    net.sync();
+    assert_eq!(net.frames(0x281).len(), 1);
+    // Without window the late SYNC still triggers the PDO.
+    net.a.write(0x1007, 0, 0, 4).unwrap();
+    net.bus
+        .inject(encode_sync(CanId::std_masked(0x80), Some(3)));
+    net.run(1);
+    assert_eq!(net.frames(0x281).len(), 2);
+}
+
+#[test]
+fn remote_requests() {
+    let mut net = Net::new();
+    net.a.pdo(0x1800, 0x181, 253, 0, 0, &[0x2000_0108]);
+    net.start();
+    net.a.write(0x2000, 1, 0x42, 1).unwrap();
+    net.run(5);
+    assert!(net.frames(0x181).is_empty(), "253 is sent on request only");
+    net.bus
+        .inject(CanFrame::remote(CanId::std_masked(0x181), 1));
+    net.step();
+    assert_eq!(net.frames(0x181), vec![(50, vec![0x42])]);
+    // Type 252: sampled at the SYNC, sent on request.
+    net.a.pdo(0x1800, 0x181, 252, 0, 0, &[0x2000_0108]);
+    net.a.write(0x2000, 1, 1, 1).unwrap();
+    net.sync();
+    net.a.write(0x2000, 1, 2, 1).unwrap();
+    net.run(1);
+    assert_eq!(net.frames(0x181).len(), 1, "252 does not send on SYNC");
+    net.bus
+        .inject(CanFrame::remote(CanId::std_masked(0x181), 1));
+    net.step();
+    assert_eq!(net.frames(0x181)[1].1, vec![1], "the value of the SYNC");
+    // Bit 30 set: no remote requests.
+    net.a.pdo(0x1800, 0x4000_0181, 253, 0, 0, &[0x2000_0108]);
+    net.bus
+        .inject(CanFrame::remote(CanId::std_masked(0x181), 1));
+    net.run(2);
+    assert_eq!(net.frames(0x181).len(), 2);
+}
+
+#[test]
+fn short_rpdo_is_rejected_with_emcy_8210_and_long_one_accepted() {
+    let mut net = Net::new();
+    net.start();
+    net.bus
+        .inject(CanFrame::new(CanId::std_masked(0x181), &[1, 2, 3]));
+    net.step();
+    assert_eq!(outputs(&net.b), (0, 0, 0), "variables untouched");
+    // CiA 301 table 21: 0x8210 "PDO not processed due to length error";
+    // error register generic + communication; then RPDO 0x1400 and the DLC.
+    assert_eq!(
+        net.frames(0x82),
+        vec![(0, vec![0x10, 0x82, 0x11, 0x00, 0x14, 3, 0, 0])]
+    );
+    assert_eq!(net.b.read(0x1001, 0), 0x11);
+    assert!(net.b.pdo_events().is_empty());
+    // Longer than the mapping (7 bytes): accepted, the surplus ignored.
+    net.bus.inject(CanFrame::new(
+        CanId::std_masked(0x181),
+        &[1, 2, 0, 3, 0, 0, 0, 0xEE],
+    ));
+    net.step();
+    assert_eq!(outputs(&net.b), (1, 2, 3));
+    assert_eq!(net.frames(0x82).len(), 1);
+}
+
+#[test]
+fn mapping_procedure_over_write_object() {
+    let mut net = Net::new();
+    net.start();
+    let b = &mut net.b;
+    let abort = |r: Result<(), OdError>| r.err().map(|e| e.abort);
+    // RPDO 1 is valid: neither sub 0 nor an entry may change (0x08000022).
+    assert_eq!(abort(b.write(0x1600, 0, 0, 1)), Some(0x0800_0022));
+    assert_eq!(abort(b.write(0x1600, 1, 0x2001_0210, 4)), Some(0x0800_0022));
+    // Nor its identifier (0x06090030).
+    assert_eq!(abort(b.write(0x1400, 1, 0x182, 4)), Some(0x0609_0030));
+    assert_eq!(b.read(0x1400, 1), 0x181);
+    // Procedure: invalidate, sub 0 = 0, entries, sub 0 = n, validate.
+    b.write(0x1400, 1, 0x8000_0181, 4).unwrap();
+    assert_eq!(abort(b.write(0x1600, 1, 0x2001_0210, 4)), Some(0x0800_0022));
+    b.write(0x1600, 0, 0, 1).unwrap();
+    let refusals = [
+        (0x2001_0808u64, 0x0604_0041u32), // not kObdAccPdo
+        (0x2001_0908, 0x0604_0041),       // read-only into an RPDO
+        (0x2001_0220, 0x0604_0041),       // U16 with 32 bits
+        (0x2001_0148, 0x0604_0042),       // 72 bits
+        (0x2005_0108, 0x0602_0000),       // no such index
+        (0x2001_1F08, 0x0609_0011),       // no such subindex
+    ];
+    for (entry, code) in refusals {
+        assert_eq!(
+            abort(b.write(0x1600, 1, entry, 4)),
+            Some(code),
+            "{entry:#x}"
+        );
+        assert_eq!(b.read(0x1600, 1), 0x2001_0108, "refused entry left alone");
+    }
+    // Kernel codes for CcmWriteObject.
+    let e = b.write(0x1600, 1, 0x2005_0108, 4).unwrap_err();
+    assert_eq!(e.kernel, CopKernel::PdoVarNotFound);
+    let e = b.write(0x1600, 1, 0x2001_0808, 4).unwrap_err();
+    assert_eq!(e.kernel, CopKernel::PdoErrorMapp);
+    // New layout: U32, U16, dummy U8, U8.
+    b.write(0x1600, 1, 0x2001_0320, 4).unwrap();
+    b.write(0x1600, 2, 0x2001_0210, 4).unwrap();
+    b.write(0x1600, 3, 0x0005_0008, 4).unwrap();
+    b.write(0x1600, 4, 0x2001_0108, 4).unwrap();
+    b.write(0x1600, 5, 0x2001_0320, 4).unwrap();
+    // Five entries are 88 bits: sub 0 = 5 is refused, 4 accepted.
+    assert_eq!(abort(b.write(0x1600, 0, 5, 1)), Some(0x0604_0042));
+    assert_eq!(b.read(0x1600, 0), 0);
+    b.write(0x1600, 0, 4, 1).unwrap();
+    b.write(0x1400, 1, 0x181, 4).unwrap();
+    net.bus.inject(CanFrame::new(
+        CanId::std_masked(0x181),
+        &[0x44, 0x33, 0x22, 0x11, 0xBB, 0xAA, 0xFF, 0x5A],
+    ));
+    net.step();
+    assert_eq!(outputs(&net.b), (0x5A, 0xAABB, 0x1122_3344));
+}
+
+#[test]
+fn sdo_download_is_judged_like_write_object() {
+    let mut net = Net::new();
+    net.start();
+    // CiA 301 §7.2.4.3.3 expedited download of 4 bytes to 0x1400 sub 1
+    // (identifier change of a valid RPDO).
+    net.bus.inject(CanFrame::new(
+        CanId::std_masked(0x602),
+        &[0x23, 0x00, 0x14, 0x01, 0x82, 0x01, 0, 0],
+    ));
+    net.step();
+    // Abort 0x06090030, little-endian (CiA 301 §7.2.4.3.17).
+    assert_eq!(
+        net.frames(0x582),
+        vec![(0, vec![0x80, 0x00, 0x14, 0x01, 0x30, 0x00, 0x09, 0x06])]
+    );
+    assert_eq!(net.b.read(0x1400, 1), 0x181);
+}
+
+#[test]
+fn boolean_bit_mapping() {
+    let mut net = Net::new();
+    let tx = [0x2000_0401, 0x2000_0501, 0x2000_0601, 0x2000_0108];
+    let rx = [0x2001_0401, 0x2001_0501, 0x2001_0601, 0x2001_0108];
+    net.a.pdo(0x1800, 0x181, 255, 0, 0, &tx);
+    net.b.pdo(0x1400, 0x181, 255, 0, 0, &rx);
+    net.start();
+    net.a.write(0x2000, 4, 1, 1).unwrap();
+    net.a.write(0x2000, 6, 1, 1).unwrap();
+    net.a.write(0x2000, 1, 0xFF, 1).unwrap();
+    net.a.stack.signal_pdo(0x1800).unwrap();
+    net.run(1);
+    // 11 bits: b0 = 1, b1 = 0, b2 = 1, then 0xFF from bit 3.
+    assert_eq!(net.frames(0x181)[0].1, vec![0b1111_1101, 0b0000_0111]);
+    assert_eq!(
+        (
+            net.b.read(0x2001, 4),
+            net.b.read(0x2001, 5),
+            net.b.read(0x2001, 6)
+        ),
+        (1, 0, 1)
+    );
+    assert_eq!(net.b.read(0x2001, 1), 0xFF);
+}
+
+#[test]
+fn send_pdo_ignores_type_and_timers() {
+    let mut net = Net::new();
+    net.a.pdo(0x1800, 0x181, 1, 0, 0, &[0x2000_0108]);
+    let now = net.a.now();
+    assert_eq!(
+        net.a.stack.send_pdo(&mut net.a.port, 0x1800, now),
+        Err(CopKernel::NmtStateError),
+        "not in PRE-OPERATIONAL"
+    );
+    net.start();
+    net.a.write(0x2000, 1, 9, 1).unwrap();
+    // Type 1 (cyclic synchronous), no SYNC: sent anyway.
+    net.a.stack.send_pdo(&mut net.a.port, 0x1800, now).unwrap();
+    net.a.drain();
+    assert_eq!(net.frames(0x181), vec![(0, vec![9])]);
+    assert_eq!(net.a.pdo_events(), vec![0x1800]);
+    // Inhibit time does not hold it back either.
+    net.a.pdo(0x1800, 0x181, 255, 10_000, 0, &[0x2000_0108]);
+    net.a.stack.send_pdo(&mut net.a.port, 0x1800, now).unwrap();
+    net.a.stack.send_pdo(&mut net.a.port, 0x1800, now).unwrap();
+    assert_eq!(net.frames(0x181).len(), 3);
+    // ... but it restarts it: an event now waits for the inhibit time.
+    net.a.stack.signal_pdo(0x1800).unwrap();
+    net.run(5);
+    assert_eq!(net.frames(0x181).len(), 3);
+    let r = |n: &mut Node, i| {
+        let now = n.now();
+        n.stack.send_pdo(&mut n.port, i, now)
+    };
+    assert_eq!(r(&mut net.a, 0x1805), Err(CopKernel::PdoNotExist));
+    assert_eq!(r(&mut net.a, 0x1400), Err(CopKernel::PdoNotExist));
+    assert_eq!(r(&mut net.a, 0x1801), Err(CopKernel::PdoErrorSend));
+    // A full driver buffer is reported.
+    net.bus.refuse_tx(net.a.port.node(), 1);
+    assert_eq!(r(&mut net.a, 0x1800), Err(CopKernel::CdrvTxBuffLowOverrun));
+}
+
+#[test]
+fn pdos_are_silent_outside_operational() {
+    let mut net = Net::new();
+    net.a.pdo(0x1800, 0x181, 254, 0, 10, &[0x2000_0108]);
+    net.a.pdo(0x1801, 0x281, 1, 0, 0, &[0x2000_0108]);
+    // PRE-OPERATIONAL: events, event timer, SYNC and RPDOs do nothing.
+    net.a.stack.signal_pdo(0x1800).unwrap();
+    net.run(30);
+    net.sync();
+    net.bus.inject(CanFrame::new(
+        CanId::std_masked(0x181),
+        &[1, 2, 0, 3, 0, 0, 0],
+    ));
+    net.step();
+    assert!(net.frames(0x281).is_empty());
+    assert_eq!(
+        net.frames(0x181).len(),
+        1,
+        "only the injected frame is on the bus"
+    );
+    assert_eq!(outputs(&net.b), (0, 0, 0));
+    // OPERATIONAL: the event timer runs.
+    net.start();
+    net.run(10);
+    assert_eq!(net.frames(0x181).len(), 2);
+    // STOPPED: silent again.
+    net.a.command(NmtCommand::StopRemoteNode);
+    net.b.command(NmtCommand::StopRemoteNode);
+    net.run(30);
+    net.sync();
+    net.bus.inject(CanFrame::new(
+        CanId::std_masked(0x181),
+        &[1, 2, 0, 3, 0, 0, 0],
+    ));
+    net.step();
+    assert_eq!(net.frames(0x181).len(), 3, "only the injected frame");
+    assert!(net.frames(0x281).is_empty());
+    assert_eq!(outputs(&net.b), (0, 0, 0));
+}
+
+#[test]
+fn critical_section_defers_rpdo_data() {
+    let mut net = Net::new();
+    net.start();
+    net.b.stack.enter_critical_pdo();
+    net.b.stack.enter_critical_pdo();
+    net.bus.inject(CanFrame::new(
+        CanId::std_masked(0x181),
+        &[1, 2, 0, 3, 0, 0, 0],
+    ));
+    net.bus.inject(CanFrame::new(
+        CanId::std_masked(0x181),
+        &[4, 5, 0, 6, 0, 0, 0],
+    ));
+    net.step();
+    assert_eq!(outputs(&net.b), (0, 0, 0));
+    net.b.stack.leave_critical_pdo();
+    net.step();
+    assert_eq!(outputs(&net.b), (0, 0, 0), "still one level inside");
+    net.b.stack.leave_critical_pdo();
+    net.step();
+    assert_eq!(outputs(&net.b), (4, 5, 6), "the latest PDO");
+}
+
+#[test]
+fn rpdo_deadline_monitoring_sends_emcy_8250_once() {
+    let mut net = Net::new();
+    net.b.pdo(
+        0x1400,
+        0x181,
+        255,
+        0,
+        50,
+        &[0x2001_0108, 0x2001_0210, 0x2001_0320],
+    );
+    net.start();
+    net.run(100);
+    assert!(net.frames(0x82).is_empty(), "armed by the first reception");
+    net.bus.inject(CanFrame::new(
+        CanId::std_masked(0x181),
+        &[1, 2, 0, 3, 0, 0, 0],
+    ));
+    net.run(60);
+    // CiA 301 table 21: 0x8250 "RPDO timeout".
+    let e = net.frames(0x82);
+    assert_eq!(e.len(), 1);
+    assert_eq!(e[0].1[..2], [0x50, 0x82]);
+    assert_eq!(e[0].0, 1000 + 510, "just after 50 ms");
+    net.run(100);
+    assert_eq!(net.frames(0x82).len(), 1, "once");
+}
+
+#[test]
+fn reset_communication_restores_the_pdo_configuration() {
+    let mut net = Net::new();
+    net.a.pdo(0x1800, 0x185, 254, 5, 7, &[0x2000_0108]);
+    assert_eq!(net.a.read(0x1800, 1), 0x185);
+    net.a.command(NmtCommand::ResetCommunication);
+    assert_eq!(net.a.read(0x1800, 1), 0x181);
+    assert_eq!(net.a.read(0x1800, 2), 255);
+    assert_eq!(net.a.read(0x1A00, 0), 3);
+    assert_eq!(
+        net.a.stack.pdo().cob_id(0x1800),
+        Some(CanId::std_masked(0x181))
+    );
+    net.start();
+    net.a.stack.signal_pdo(0x1800).unwrap();
+    net.run(1);
+    assert_eq!(net.frames(0x181).len(), 1);
+    assert!(net.frames(0x185).is_empty());
+}
+
+#[test]
+fn define_pdo_tab_rules() {
+    let mut net = Net::new();
+    // m_bNodeID is added to the identifier; the PDO type must match.
+    let wrong = PdoParam {
+        cob_id: Some(0x200),
+        ..PdoParam::new(0x1401, Direction::Tx)
+    };
+    assert_eq!(net.b.define(&wrong), Err(CopKernel::InvalidParam));
+    assert_eq!(
+        net.b.define(&PdoParam::new(0x1405, Direction::Rx)),
+        Err(CopKernel::PdoNotExist)
+    );
+    let good = PdoParam {
+        node_id: 1,
+        cob_id: Some(0x280),
+        tx_type: Some(254),
+        entry_count: Some(1),
+        entries: Some(&[0x2001_0210]),
+        ..PdoParam::new(0x1401, Direction::Rx)
+    };
+    net.b.define(&good).unwrap();
+    assert_eq!(net.b.read(0x1401, 1), 0x281);
+    assert_eq!(net.b.read(0x1401, 2), 254);
+    assert_eq!(
+        (net.b.read(0x1601, 0), net.b.read(0x1601, 1)),
+        (1, 0x2001_0210)
+    );
+    // A mapping error leaves the PDO invalid and returns the PDO code.
+    let bad = PdoParam {
+        entry_count: Some(1),
+        entries: Some(&[0x2001_0208]),
+        ..PdoParam::new(0x1401, Direction::Rx)
+    };
+    assert_eq!(net.b.define(&bad), Err(CopKernel::PdoErrorMapp));
+    assert_eq!(net.b.read(0x1401, 1), 0x8000_0281);
+    let missing = PdoParam {
+        entry_count: Some(1),
+        entries: Some(&[0x2009_0108]),
+        cob_id: Some(0x281),
+        ..PdoParam::new(0x1401, Direction::Rx)
+    };
+    assert_eq!(net.b.define(&missing), Err(CopKernel::PdoVarNotFound));
+    let long = PdoParam {
+        entry_count: Some(3),
+        entries: Some(&[0x2001_0320, 0x2001_0320, 0x2001_0108]),
+        ..PdoParam::new(0x1401, Direction::Rx)
+    };
+    assert_eq!(net.b.define(&long), Err(CopKernel::PdoLengthExceeded));
+    let reserved = PdoParam {
+        tx_type: Some(252),
+        ..PdoParam::new(0x1401, Direction::Rx)
+    };
+    assert_eq!(net.b.define(&reserved), Err(CopKernel::InvalidParam));
+    net.b.define(&good).unwrap();
+    assert_eq!(net.b.read(0x1401, 1), 0x281);
+}
+
+static STATIC_TX: [AtomicU8; 3] = decl::zeroed();
+static STATIC_RX: [AtomicU8; 3] = decl::zeroed();
+
+#[test]
+fn static_pdos_carry_a_byte_block() {
+    let mut net = Net::new();
+    decl::set(&STATIC_RX, [0; 3]);
+    let now = net.a.now();
+    let tx = StaticPdoParam {
+        commu_index: 0x1801,
+        cob_id: 0x301,
+        tx_type: 255,
+        inhibit_time: 0,
+        event_time: 0,
+        data: &STATIC_TX,
+        notify: false,
+    };
+    net.a.stack.define_static_pdo(&tx, now).unwrap();
+    let rx = StaticPdoParam {
+        commu_index: 0x1401,
+        cob_id: 0x301,
+        tx_type: 254,
+        data: &STATIC_RX,
+        notify: true,
+        ..tx
+    };
+    net.b.stack.define_static_pdo(&rx, now).unwrap();
+    net.start();
+    decl::set(&STATIC_TX, [0xA1, 0xB2, 0xC3]);
+    net.a.stack.signal_pdo(0x1801).unwrap();
+    net.run(1);
+    assert_eq!(net.frames(0x301), vec![(10, vec![0xA1, 0xB2, 0xC3])]);
+    assert_eq!(decl::get(&STATIC_RX), [0xA1, 0xB2, 0xC3]);
+    assert_eq!(net.b.pdo_events(), vec![0x1401]);
+    net.bus
+        .inject(CanFrame::new(CanId::std_masked(0x301), &[1, 2]));
+    net.step();
+    assert_eq!(decl::get(&STATIC_RX), [0xA1, 0xB2, 0xC3]);
+    assert_eq!(net.frames(0x82)[0].1[..2], [0x10, 0x82]);
+}
+
+#[test]
+fn sync_consumer_configuration() {
+    let mut net = Net::new();
+    net.a.pdo(0x1801, 0x281, 1, 0, 0, &[0x2000_0108]);
+    net.start();
+    let now = net.a.now();
+    net.a.stack.config_sync_consumer(0x81, 0, now).unwrap();
+    assert_eq!(net.a.read(0x1005, 0), 0x81);
+    net.sync(); // on 0x80: not a SYNC any more
+    assert!(net.frames(0x281).is_empty());
+    net.bus.inject(encode_sync(CanId::std_masked(0x81), None));
+    net.step();
+    assert_eq!(net.frames(0x281).len(), 1);
+    // This library does not produce SYNC.
+    assert_eq!(
+        net.a.stack.config_sync_consumer(0x4000_0080, 0, now),
+        Err(CopKernel::InvalidParam)
+    );
+    assert_eq!(net.a.read(0x1005, 0), 0x81);
+    net.a.stack.init_sync_consumer().unwrap();
+    assert_eq!(
+        net.a.stack.pdo().sync_cob_id(),
+        Some(CanId::std_masked(0x81))
+    );
+    // A SYNC with a counter byte is a SYNC; with two bytes it is not.
+    net.bus
+        .inject(CanFrame::new(CanId::std_masked(0x81), &[1, 2]));
+    net.step();
+    assert_eq!(net.frames(0x281).len(), 1);
+    net.bus
+        .inject(encode_sync(CanId::std_masked(0x81), Some(9)));
+    net.step();
+    assert_eq!(net.frames(0x281).len(), 2);
+}
