@@ -134,19 +134,32 @@ pub struct Net {
 
 static SERIAL: Mutex<()> = Mutex::new(());
 
-/// Writes a 16-bit value into a variable field (CPU byte order).
+/// Writes a 16-bit value into a variable field: in CPU byte order (the
+/// variable as the dictionary sees it) with dynamic mapping; in frame byte
+/// order with static mapping, whose fields are copied to and from the
+/// frames unchanged (manual 2.8.7).
 pub fn put(field: &[AtomicU8; 4], offset: usize, v: u16) {
-    for (b, x) in field[offset..offset + 2].iter().zip(v.to_ne_bytes()) {
+    let bytes = if cfg!(feature = "srdo-static-mapping") {
+        v.to_le_bytes()
+    } else {
+        v.to_ne_bytes()
+    };
+    for (b, x) in field[offset..offset + 2].iter().zip(bytes) {
         b.store(x, Ordering::Relaxed);
     }
 }
 
-/// Reads a 16-bit value from a variable field (CPU byte order).
+/// Reads a 16-bit value from a variable field (byte order as in [`put`]).
 pub fn take(field: &[AtomicU8; 4], offset: usize) -> u16 {
-    u16::from_ne_bytes([
+    let bytes = [
         field[offset].load(Ordering::Relaxed),
         field[offset + 1].load(Ordering::Relaxed),
-    ])
+    ];
+    if cfg!(feature = "srdo-static-mapping") {
+        u16::from_le_bytes(bytes)
+    } else {
+        u16::from_ne_bytes(bytes)
+    }
 }
 
 /// The program monitor event list when `SRDO_USE_PROGMONITOR` is on,
