@@ -10,7 +10,7 @@ use core::sync::atomic::AtomicU8;
 
 use cop::ccm::{NmtCommand, Stack};
 use cop::error::{CopKernel, OdError};
-use cop::event::{Event, NmtState};
+use cop::event::{Event, NmtEvent, NmtState};
 use cop::od::{Access, ByteOrder, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
 use cop::pdo::decl::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
 use cop::pdo::{Direction, PDO_MAX_MAPPENTRIES, PdoParam, StaticPdoParam};
@@ -977,4 +977,53 @@ fn sync_consumer_configuration() {
         .inject(encode_sync(CanId::std_masked(0x81), Some(9)));
     net.step();
     assert_eq!(net.frames(0x281).len(), 2);
+}
+
+#[test]
+fn pdos_defined_in_the_reset_communication_callback() {
+    // SYS TEC applications define their PDOs in the NMT callback at
+    // kNmtEvResetCommunication (SYSTEC_API.md §10), before the stack has
+    // taken over the communication parameters.
+    let guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let bus = SimBus::new();
+    let a = Node::new(&bus, node_a::od(), 1);
+    let mut stack = Stack::new(node_b::od(), 2).unwrap();
+    let mut port = bus.attach(64);
+    let mut defined = 0;
+    while let Some(e) = stack.drain(&mut port, Ticks(0)) {
+        if e == Event::Nmt(NmtEvent::ResetCommunication) {
+            // kPdoValidCallback alone, then the COB-ID.
+            let cb = PdoParam {
+                notify: Some(true),
+                ..PdoParam::new(0x1400, Direction::Rx)
+            };
+            stack.define_pdo(&cb, Ticks(0)).unwrap();
+            let cob = PdoParam {
+                cob_id: Some(0x181),
+                ..PdoParam::new(0x1400, Direction::Rx)
+            };
+            stack.define_pdo(&cob, Ticks(0)).unwrap();
+            defined += 1;
+        }
+    }
+    assert_eq!(defined, 1);
+    stack.connect().unwrap();
+    let b = Node {
+        stack,
+        port,
+        events: Vec::new(),
+    };
+    let mut net = Net {
+        bus,
+        a,
+        b,
+        _guard: guard,
+    };
+    net.b.drain();
+    net.start();
+    set_inputs(&mut net.a, 3, 4, 5);
+    net.a.stack.signal_pdo(0x1800).unwrap();
+    net.run(1);
+    assert_eq!(outputs(&net.b), (3, 4, 5));
+    assert_eq!(net.b.pdo_events(), vec![0x1400]);
 }

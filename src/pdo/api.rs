@@ -118,10 +118,9 @@ impl Stack {
         if p.dir != dir {
             return Err(CopKernel::InvalidParam);
         }
-        if self.od().find_entry(commu_index).is_none() {
-            return Err(CopKernel::PdoNotExist);
-        }
-        Ok(p)
+        self.pdo()
+            .covers(self.od(), commu_index)
+            .ok_or(CopKernel::PdoNotExist)
     }
 
     /// Writes the communication parameters shared by both definition
@@ -207,9 +206,10 @@ impl Stack {
         };
         self.define_commu(p, c, mapping, now)?;
         if let Some(n) = param.notify {
-            self.pdo_parts()
+            let parts = self.pdo_parts();
+            parts
                 .pdo
-                .attach(param.commu_index, Some(n), None)?;
+                .attach(parts.od, param.commu_index, Some(n), None)?;
         }
         Ok(())
     }
@@ -233,9 +233,10 @@ impl Stack {
         // The block is attached before the COB-ID makes the PDO valid, so
         // that the PDO never runs with the dictionary mapping by mistake.
         let attach = move |s: &mut Stack| -> CopResult {
-            s.pdo_parts()
+            let parts = s.pdo_parts();
+            parts
                 .pdo
-                .attach(commu, Some(param.notify), Some(Some(data)))
+                .attach(parts.od, commu, Some(param.notify), Some(Some(data)))
         };
         let c = Commu {
             cob: Some(param.cob_id),

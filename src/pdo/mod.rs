@@ -52,6 +52,20 @@
 //! * The SYNC consumer is always active with the COB-ID of 0x1005 (0x80
 //!   when the dictionary has no 0x1005). This library does not produce
 //!   SYNC: 0x1005 bit 30 is refused.
+//! * The SYNC counter byte (DLC 1) is accepted and not evaluated: the
+//!   parameter objects end at sub 5, so there is no SYNC start value;
+//!   cyclic types count SYNCs from entering OPERATIONAL. Frames on the SYNC
+//!   COB-ID with DLC above 1 are not SYNC messages and are ignored.
+//! * A TPDO the driver refuses stays pending when it is event-driven and is
+//!   retried in the next cycle; a synchronous or remote transmission is
+//!   bound to its trigger and is not repeated.
+//! * `CcmEnterCriticalSectionPdoProcess` … `Leave`: in between, no RPDO data
+//!   reach variables (the latest frame per RPDO is kept and applied in the
+//!   first cycle after the section) and no TPDO is sampled; timers keep
+//!   running, so due TPDOs go out right after the section.
+//! * The application's attachments (callback wish, static data block of
+//!   `CcmDefineStaticPdoTab`) survive NMT resets; the dictionary values are
+//!   restored to their defaults as CiA 301 requires.
 
 mod api;
 pub mod decl;
@@ -565,15 +579,28 @@ impl Pdo {
         }
     }
 
+    /// The PDO of a communication index when the dictionary has it and the
+    /// tables have room for it. Unlike the served PDOs this does not need a
+    /// reconfiguration first: applications define their PDOs in the NMT
+    /// callback at kNmtEvResetCommunication, before the module takes over
+    /// the configuration.
+    pub fn covers(&self, od: &ObjectDictionary, commu_index: u16) -> Option<PdoIndex> {
+        let p = PdoIndex::of(commu_index).filter(|p| p.role == Role::Commu)?;
+        self.channel(p)?;
+        od.find_entry(commu_index).map(|_| p)
+    }
+
     /// Attaches (or with `None` detaches) the application callback flag
-    /// and the static data block of a PDO.
+    /// and the static data block of a PDO. `kCopPdoNotExist` for a PDO
+    /// the dictionary or the tables do not have.
     pub fn attach(
         &mut self,
+        od: &ObjectDictionary,
         commu_index: u16,
         notify: Option<bool>,
         static_data: Option<Option<&'static [AtomicU8]>>,
     ) -> CopResult {
-        let p = self.served(commu_index).ok_or(CopKernel::PdoNotExist)?;
+        let p = self.covers(od, commu_index).ok_or(CopKernel::PdoNotExist)?;
         let ch = self.channel_mut(p).ok_or(CopKernel::PdoNotExist)?;
         if let Some(n) = notify {
             ch.notify = n;
@@ -701,7 +728,6 @@ impl Pdo {
     /// `kCopPdoErrorSend` for an invalid PDO (COB-ID bit 31),
     /// `kCopPdoErrorPdoEncode` when a mapped object cannot be read, or the
     /// driver's code.
-    #[allow(clippy::too_many_arguments)]
     pub fn send_now(
         &mut self,
         od: &ObjectDictionary,
