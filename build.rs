@@ -155,7 +155,9 @@ fn from_headers(dir: &Path, include: &Path) -> Config {
     }
     src.push_str("#include \"copdef.h\"\n");
     for k in KEYS {
-        let _ = writeln!(src, "COP_PROBE {k} = {k}");
+        // The key is glued to the marker so that the preprocessor leaves the
+        // name alone and expands only the value.
+        let _ = writeln!(src, "COP_PROBE_{k} = {k}");
     }
     fs::write(&probe, src).unwrap();
     let expanded = cc::Build::new()
@@ -167,7 +169,7 @@ fn from_headers(dir: &Path, include: &Path) -> Config {
     let text = String::from_utf8_lossy(&expanded);
     let mut values = BTreeMap::new();
     for line in text.lines() {
-        if let Some(rest) = line.trim().strip_prefix("COP_PROBE ") {
+        if let Some(rest) = line.trim().strip_prefix("COP_PROBE_") {
             if let Some((k, v)) = rest.split_once(" = ") {
                 values.insert(k.trim().to_string(), v.trim().to_string());
             }
