@@ -338,7 +338,12 @@ impl Stack {
     }
 
     /// Aborts an SDO client transfer (`CcmSdocAbort`).
-    pub fn sdo_client_abort(&mut self, port: &mut impl CanPort, index: u16, code: u32) -> CopResult {
+    pub fn sdo_client_abort(
+        &mut self,
+        port: &mut impl CanPort,
+        index: u16,
+        code: u32,
+    ) -> CopResult {
         self.sdoc.abort(port, index, code, &mut self.queue)
     }
 
