@@ -658,6 +658,9 @@ impl Stack {
             let _ = port.send(&nmt::encode_bootup(self.node_id), Priority::High);
             self.hb.start(now);
         }
+        if s == NmtState::Operational && from != NmtState::Operational {
+            self.srdo.subscribe(&self.od, port);
+        }
         self.srdo.on_state(&self.od, s, self.node_id, now);
         self.pdo.on_state(s, now);
     }

@@ -134,6 +134,12 @@ pub struct Net {
 
 static SERIAL: Mutex<()> = Mutex::new(());
 
+/// Holds the lock over the shared statics (for tests that build their own
+/// nodes instead of a [`Net`]).
+pub fn serial_guard() -> MutexGuard<'static, ()> {
+    SERIAL.lock().unwrap_or_else(|e| e.into_inner())
+}
+
 /// Writes a 16-bit value into a variable field: in CPU byte order (the
 /// variable as the dictionary sees it) with dynamic mapping; in frame byte
 /// order with static mapping, whose fields are copied to and from the

@@ -494,6 +494,14 @@ impl Srdo {
     pub fn reconfigure(&mut self, od: &ObjectDictionary, port: &mut impl CanPort) {
         self.stop();
         self.load_cached(od);
+        self.subscribe(od, port);
+    }
+
+    /// Asks the driver to receive the GFC id and the COB-IDs every SRDO has
+    /// in the dictionary now. The stack calls this after reset
+    /// communication and again when the node enters OPERATIONAL, so COB-IDs
+    /// configured over SDO in PRE-OPERATIONAL reach a filtering driver.
+    pub fn subscribe(&self, od: &ObjectDictionary, port: &mut impl CanPort) {
         if crate::config::SRDO_USE_GFC {
             let _ = port.subscribe(wire::encode_gfc().id, Priority::High);
         }
