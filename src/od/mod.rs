@@ -12,6 +12,7 @@
 //! [`ObjectDictionary::write`], so access rights, ranges, module hooks and
 //! application callbacks apply to every path alike.
 
+pub mod dcf;
 pub mod decl;
 mod types;
 pub mod value;
