@@ -115,6 +115,8 @@ pub struct Stack {
     sdoc: SdoClient,
     srdo: Srdo,
     pdo: Pdo,
+    /// The dynamic object dictionary in force (`DynBuildOd`).
+    dynamic: Option<crate::od::dynamic::Installed>,
 }
 
 /// The module reactions to dictionary writes.
@@ -194,6 +196,7 @@ impl Stack {
             sdoc: SdoClient::new(),
             srdo: Srdo::new(),
             pdo: Pdo::new(),
+            dynamic: None,
         };
         s.srdo.init(&s.od)?;
         s.queue.emit(Event::Nmt(NmtEvent::EnterInitialising));
@@ -595,8 +598,8 @@ impl Stack {
 
     fn run(&mut self, i: Internal, port: &mut impl CanPort, now: Ticks) {
         match i {
-            Internal::RestoreApplication => self.od.restore_defaults(0x2000, 0x9FFF),
-            Internal::RestoreCommunication => self.od.restore_defaults(0x1000, 0x1FFF),
+            Internal::RestoreApplication => self.restore_defaults(0x2000, 0x9FFF),
+            Internal::RestoreCommunication => self.restore_defaults(0x1000, 0x1FFF),
             Internal::Reconfigure => {
                 self.hb.reconfigure(&self.od, now);
                 self.hbc.reconfigure(&self.od);
@@ -613,6 +616,71 @@ impl Stack {
             Internal::EnterState(s) => self.enter_state(s, port, now),
             Internal::SrdoCheckHandled(slot) => self.srdo.check_handled(slot, &mut self.queue),
         }
+    }
+
+    /// Restores the defaults of `from..=to`; a dynamic OD then puts its
+    /// values back (it stays in force until `DynDestroyOd`).
+    fn restore_defaults(&mut self, from: u16, to: u16) {
+        self.od.restore_defaults(from, to);
+        if let Some(d) = &self.dynamic {
+            crate::od::dynamic::reapply(&self.od, d, from, to);
+        }
+    }
+
+    /// The dynamic object dictionary in force, if any.
+    pub fn dynamic_od(&self) -> Option<&crate::od::dynamic::Installed> {
+        self.dynamic.as_ref()
+    }
+
+    /// Records (`Some`) or forgets (`None`) the dynamic OD in force.
+    pub(crate) fn set_dynamic_od(&mut self, d: Option<crate::od::dynamic::Installed>) {
+        self.dynamic = d;
+    }
+
+    /// Lets every module take over its parameters from the dictionary again,
+    /// as after reset communication but without NMT transition: after a
+    /// dynamic OD was built, rolled back or destroyed. PDOs keep running
+    /// when the node is OPERATIONAL.
+    pub fn reload_configuration(&mut self, port: &mut impl CanPort, now: Ticks) {
+        self.hb.reconfigure(&self.od, now);
+        self.hbc.reconfigure(&self.od);
+        self.emcy.reconfigure(&self.od, self.node_id);
+        self.sdo.reconfigure(&self.od, self.node_id);
+        self.sdoc.reconfigure(&self.od);
+        self.subscribe(port);
+        self.srdo.reconfigure(&self.od, port);
+        self.pdo.reconfigure(&self.od, self.node_id, port);
+        self.pdo.on_state(self.state, now);
+    }
+
+    /// The PDO part of `DynDestroyOd` (seed manual L-1087d 5.2): the PDO
+    /// module sees kNmtEvPreResetCommunication (every PDO stops), the
+    /// dynamic tables leave the dictionary (`original_user` becomes the
+    /// user part again), the PDO parameters of the static dictionary get
+    /// their defaults, and the PDO module takes them over in PRE-OPERATIONAL,
+    /// whatever the node's NMT state (an NMT start makes the PDOs run
+    /// again). The other modules re-read their parameters.
+    pub(crate) fn destroy_dynamic_od(
+        &mut self,
+        original_user: &'static [crate::od::ObdEntry],
+        port: &mut impl CanPort,
+        now: Ticks,
+    ) {
+        self.pdo.on_state(NmtState::Initialisation, now);
+        self.dynamic = None;
+        // The previous user part passed the checks once already.
+        let _ = self.od.set_user_part(original_user);
+        self.od.restore_defaults(0x1400, 0x1BFF);
+        self.sdo.cancel();
+        self.hb.reconfigure(&self.od, now);
+        self.hbc.reconfigure(&self.od);
+        self.emcy.reconfigure(&self.od, self.node_id);
+        self.sdo.reconfigure(&self.od, self.node_id);
+        self.sdoc.reconfigure(&self.od);
+        self.subscribe(port);
+        self.srdo.reconfigure(&self.od, port);
+        self.pdo.reconfigure(&self.od, self.node_id, port);
+        self.pdo.on_state(NmtState::PreOperational, now);
     }
 
     /// Tells the driver which identifiers to receive (`CdrvDefineCanId`):

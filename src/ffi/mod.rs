@@ -5,6 +5,7 @@
 
 pub mod ccm;
 pub mod driver;
+pub mod dynod;
 pub mod global;
 pub mod master;
 pub mod od_table;

@@ -14,6 +14,7 @@
 
 pub mod dcf;
 pub mod decl;
+pub mod dynamic;
 mod types;
 pub mod value;
 

@@ -1,0 +1,942 @@
+//! The dynamic object dictionary (SYS TEC CcmDyn, seed manual L-1087d):
+//! what a binary DCF container ([`super::dcf`]) does to a dictionary.
+//!
+//! This module decides; [`crate::ffi::dynod`] builds the tables in the
+//! static pool (raw pointers) and exports `DynBuildOd` / `DynDestroyOd`.
+//! [`DynPool`] is the safe Rust entry point.
+//!
+//! # What a container does (seed Bild 2)
+//! Every entry either addresses an object that exists (the static parts or
+//! a user part the application declared) or creates one:
+//! * **existing, writable**: the value is written through the normal
+//!   dictionary write path ([`crate::ccm::Stack::write_object`]): length,
+//!   range, module hooks (PDO, SRDO, heartbeat...) and application
+//!   callbacks apply; numbers arrive little-endian and are stored in the
+//!   CPU's byte order.
+//! * **existing, not writable** (read-only or constant): the entry is
+//!   checked for existence and otherwise ignored; the firmware's value
+//!   wins. Real containers carry such entries (0x1000, 0x1018).
+//! * **new**: the object is created in the user part. Its type comes from
+//!   the attribute byte (BOOLEAN, VISIBLE_STRING, NUMERIC = UNSIGNEDn of the
+//!   entry's size, none = DOMAIN), its access from the READ/WRITE/PDO_MAPP
+//!   bits. Objects of 0xA000–0xAFFF are network variables: numeric,
+//!   read-write, mappable whatever the attribute says, with the type of
+//!   seed table 2 (UNSIGNEDn of the size from 0xA900 on); their subindex 0
+//!   is the read-only UNSIGNED8 count when the object has other
+//!   subindices. An array or record without subindex 0 in the container
+//!   gets one (read-only, the highest subindex).
+//!
+//! # Process image
+//! When the caller hands a process image, new fixed-size variables are
+//! placed in it: by the address segment when the container has one (a word
+//! of 0xFFFF keeps the variable in the pool), otherwise by the CiA 302/405
+//! rule of seed chapter 6 ([`super::dcf::rule_offset`]) for 0xA000–0xA8FF,
+//! with the areas of the parameter segment, or inputs from 0 and outputs
+//! after them ([`super::dcf::PiLayout`]). Strings, domains and everything
+//! without a place live in the pool. A variable outside the image is
+//! `kCopDynNoMemory`; two variables sharing bytes `kCopDynInvalidConfig`.
+//!
+//! # PDOs (seed Bild 2, chapter 3)
+//! A PDO the container touches is reconfigured as a unit, whatever order
+//! the container uses: first it is made invalid (COB-ID bit 31) and its
+//! mapping count set to 0, then the other values are written in container
+//! order, then the mapping count, last the COB-ID (the CiA 301 procedure,
+//! so the PDO module's rules accept every step). Every communication
+//! object needs its mapping object and the other way round (0x1400 needs
+//! 0x1600, 0x1801 needs 0x1A01), in the container or in the dictionary.
+//! Before anything changes, the final state of every touched PDO is
+//! checked: a valid COB-ID must be usable (`kCopCobIllegalCanId`), the PDO
+//! number must be below the module's capacity (`kCopCobNoFreeEntry`), the
+//! mapping must hold (`kCopPdoErrorMapp`) and two valid TPDOs must not
+//! share a COB-ID (`kCopCobAlreadyExist`).
+//!
+//! # All or nothing
+//! The container is validated, every entry checked against the dictionary
+//! and the new tables built and checked on a copy of the dictionary before
+//! the first write. If a write is refused all the same (a module rule or
+//! an application callback), every value written so far is put back from
+//! a snapshot, the user part is restored and the modules re-read their
+//! parameters.
+//!
+//! # Resets
+//! After NMT reset communication (or reset node) the objects the container
+//! wrote get the container's values again, static ones included: the
+//! dynamic OD stays in force until `DynDestroyOd`.
+
+use core::sync::atomic::AtomicU8;
+
+use super::dcf::{self, Container, Entry, PiArea, PiLayout, PiParams, attr};
+use super::{Access, ByteOrder, DataType, ObdEntry, ObjectDictionary, Part, kind, value};
+use crate::ccm::Stack;
+use crate::error::CopKernel;
+use crate::pdo::mapping;
+use crate::pdo::{Direction, PDO_MAX_MAPPENTRIES, PdoIndex, Role};
+use crate::port::Ticks;
+use crate::wire::pdo::{COB_INVALID, check_identifier};
+
+pub use crate::ffi::dynod::DynPool;
+
+/// Where a new variable lives.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Place {
+    /// In the pool.
+    Pool,
+    /// In the process image at this offset.
+    Image(u32),
+}
+
+/// The initial value of a new subindex.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Initial<'a> {
+    /// From the container (CANopen byte order).
+    Wire(&'a [u8]),
+    /// A count the container did not carry (subindex 0 of an array).
+    Count(u8),
+}
+
+/// Everything needed to create one new subindex.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct NewSub<'a> {
+    /// Index.
+    pub index: u16,
+    /// Subindex.
+    pub sub: u8,
+    /// Data type.
+    pub typ: DataType,
+    /// Access attributes.
+    pub access: Access,
+    /// Storage kind (`kind::RAM` or `kind::RAM_VSTRING`).
+    pub kind: u8,
+    /// `m_dwSize`: variable width, or capacity of a string.
+    pub size: u32,
+    /// Initial value.
+    pub initial: Initial<'a>,
+    /// Where the variable lives.
+    pub place: Place,
+}
+
+impl NewSub<'_> {
+    /// Bytes of memory the variable takes (strings: one more for the NUL).
+    pub fn storage_len(&self) -> usize {
+        let n = self.size as usize;
+        if self.kind == kind::RAM_VSTRING {
+            n + 1
+        } else {
+            n
+        }
+    }
+
+    /// Writes the initial value in memory format (numbers in the CPU's
+    /// byte order and their C width) into `out` (`storage_len` bytes).
+    pub fn initial_bytes(&self, out: &mut [u8]) -> Result<(), CopKernel> {
+        out.fill(0);
+        match self.initial {
+            Initial::Count(n) => {
+                if let Some(b) = out.first_mut() {
+                    *b = n;
+                }
+                Ok(())
+            }
+            Initial::Wire(w) if self.typ.wire_size().is_some() => {
+                value::wire_to_native(self.typ, w, self.size as usize, out)
+                    .map_err(|_| CopKernel::DynInvalidConfig)
+            }
+            Initial::Wire(w) => {
+                let dst = out.get_mut(..w.len()).ok_or(CopKernel::DynInvalidConfig)?;
+                dst.copy_from_slice(w);
+                Ok(())
+            }
+        }
+    }
+}
+
+/// The result of a successful build.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BuildInfo {
+    /// The process image as the container describes it (the parameter
+    /// segment, or the layout of the offset rule).
+    pub pi: PiParams,
+    /// Objects created.
+    pub new_indices: usize,
+    /// Subindices created.
+    pub new_subs: usize,
+    /// Pool bytes in use.
+    pub pool_used: usize,
+}
+
+/// What the stack keeps while a dynamic OD is installed.
+#[derive(Clone, Copy, Debug)]
+pub struct Installed {
+    /// Copy of the container's index segment (re-applied after resets).
+    pub(crate) values: &'static [u8],
+    /// The user part before the build.
+    pub(crate) original_user: &'static [ObdEntry],
+    /// Identity of the pool the tables live in (its address).
+    pub(crate) pool: usize,
+}
+
+impl Installed {
+    /// The user part that was in place before the build.
+    pub fn original_user_part(&self) -> &'static [ObdEntry] {
+        self.original_user
+    }
+}
+
+/// One write of the application sequence.
+#[derive(Clone, Copy, Debug)]
+enum Op<'a> {
+    /// A value from the container.
+    Value(&'a [u8]),
+    /// A number computed by the sequence (COB-ID invalid, count 0).
+    Uint(u64),
+    /// The value the object had before the build (from the snapshot).
+    Original,
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Write<'a> {
+    index: u16,
+    sub: u8,
+    op: Op<'a>,
+}
+
+/// Steps of the write sequence (module docs, "PDOs").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Step {
+    Invalidate,
+    ZeroCount,
+    Plain,
+    PdoValues,
+    Counts,
+    CobIds,
+    Done,
+}
+
+/// A container checked against a dictionary.
+#[derive(Clone, Copy, Debug)]
+pub struct Plan<'a> {
+    c: Container<'a>,
+    od: ObjectDictionary,
+    image_len: usize,
+    layout: PiLayout,
+    input_base: u32,
+    output_base: u32,
+    /// New index entries.
+    pub new_indices: usize,
+    /// New subindex entries (synthesised counts included).
+    pub new_subs: usize,
+    /// Pool bytes for variables that are not in the image.
+    pub data_bytes: usize,
+    /// Pool bytes for the snapshot of existing values.
+    pub snapshot_bytes: usize,
+    /// What `DynBuildOd` reports about the process image.
+    pub pi: PiParams,
+}
+
+const RECORD_HEADER: usize = 5;
+
+fn index_allowed(index: u16) -> bool {
+    // 0x0000 does not exist, 0x0001-0x0FFF are data types, 0xFFFF ends a
+    // table (`OBD_TABLE_INDEX_END`).
+    (0x1000..0xFFFF).contains(&index)
+}
+
+fn unsigned_of(len: usize) -> Option<DataType> {
+    Some(match len {
+        1 => DataType::UInt8,
+        2 => DataType::UInt16,
+        3 => DataType::UInt24,
+        4 => DataType::UInt32,
+        5 => DataType::UInt40,
+        6 => DataType::UInt48,
+        7 => DataType::UInt56,
+        8 => DataType::UInt64,
+        _ => return None,
+    })
+}
+
+fn is_pdo_param(index: u16) -> bool {
+    (0x1400..=0x1BFF).contains(&index)
+}
+
+impl<'a> Plan<'a> {
+    /// Checks `c` against `od` (the dictionary before the build) for a
+    /// process image of `image_len` bytes (0: none). Nothing changes.
+    pub fn new(
+        c: Container<'a>,
+        od: &ObjectDictionary,
+        image_len: usize,
+    ) -> Result<Self, CopKernel> {
+        let mut p = Plan {
+            c,
+            od: *od,
+            image_len,
+            layout: PiLayout::default(),
+            input_base: 0,
+            output_base: 0,
+            new_indices: 0,
+            new_subs: 0,
+            data_bytes: 0,
+            snapshot_bytes: 0,
+            pi: PiParams::default(),
+        };
+        for e in c.entries() {
+            if !p.exists(e.index) {
+                p.layout.add(e.index, e.sub);
+            }
+        }
+        match c.pi_params() {
+            Some(pi) => {
+                p.pi = pi;
+                p.input_base = pi.input_offset;
+                p.output_base = pi.output_offset;
+            }
+            None => {
+                p.pi = p.layout.params();
+                p.input_base = 0;
+                p.output_base = p.layout.output_offset();
+            }
+        }
+        for e in c.entries() {
+            if !index_allowed(e.index) {
+                return Err(CopKernel::ObdIndexNotExist);
+            }
+            if p.exists(e.index) {
+                let obj = od
+                    .find(e.index, e.sub)
+                    .map_err(|_| CopKernel::ObdSubindexNotExist)?;
+                if obj.access().writable() {
+                    od.stage(&obj, ByteOrder::Wire, e.data)
+                        .map_err(|err| err.kernel)?;
+                }
+                continue;
+            }
+            let first = p.first_occurrence(&e);
+            let d = p.describe(&first, &e)?;
+            if first.position != e.position {
+                // A repeated entry of a new object must agree with the first.
+                if first.data.len() != e.data.len() || first.attr != e.attr {
+                    return Err(CopKernel::DynInvalidConfig);
+                }
+                continue;
+            }
+            p.new_subs += 1;
+            if d.place == Place::Pool {
+                p.data_bytes += d.storage_len();
+            }
+            if p.first_of_index(&e) {
+                p.new_indices += 1;
+                let distinct = c
+                    .entries()
+                    .filter(|x| x.index == e.index && p.first_occurrence(x).position == x.position)
+                    .count();
+                let synth = usize::from(p.needs_count(e.index));
+                if distinct + synth > usize::from(u8::MAX) {
+                    return Err(CopKernel::DynInvalidConfig);
+                }
+                if synth == 1 {
+                    p.new_subs += 1;
+                    p.data_bytes += 1;
+                }
+            }
+        }
+        // Snapshot size: a record per write of the sequence (an upper bound:
+        // `apply` records each object once).
+        let mut seq = Sequence::new(&p);
+        let mut n = 0usize;
+        while let Some(w) = seq.next(&p, od) {
+            let obj = od.find(w.index, w.sub).map_err(|e| e.kernel)?;
+            n += RECORD_HEADER + obj.native_size().map_err(|e| e.kernel)?;
+        }
+        p.snapshot_bytes = n;
+        Ok(p)
+    }
+
+    /// The container.
+    pub fn container(&self) -> &Container<'a> {
+        &self.c
+    }
+
+    /// True when `index` exists in the dictionary before the build.
+    pub fn exists(&self, index: u16) -> bool {
+        self.od.find_entry(index).is_some()
+    }
+
+    fn first_occurrence(&self, e: &Entry<'a>) -> Entry<'a> {
+        self.c
+            .entries()
+            .find(|x| x.index == e.index && x.sub == e.sub)
+            .unwrap_or(*e)
+    }
+
+    fn last_occurrence(&self, index: u16, sub: u8) -> Option<Entry<'a>> {
+        self.c
+            .entries()
+            .filter(|x| x.index == index && x.sub == sub)
+            .last()
+    }
+
+    fn first_of_index(&self, e: &Entry<'a>) -> bool {
+        self.c
+            .entries()
+            .find(|x| x.index == e.index)
+            .is_some_and(|x| x.position == e.position)
+    }
+
+    /// True when a new object has subindices from 1 on but no subindex 0.
+    fn needs_count(&self, index: u16) -> bool {
+        let mut any = false;
+        for x in self.c.entries().filter(|x| x.index == index) {
+            if x.sub == 0 {
+                return false;
+            }
+            any = true;
+        }
+        any
+    }
+
+    /// Describes new subindex `e` (`first` is its first occurrence, which
+    /// decides the place; `e` gives the value).
+    fn describe(&self, first: &Entry<'a>, e: &Entry<'a>) -> Result<NewSub<'a>, CopKernel> {
+        let bad = CopKernel::DynInvalidConfig;
+        let len = e.data.len();
+        let others = self.c.has_other_subs(e.index, e.sub);
+        let (typ, access, k, size) = if dcf::is_network_variable(e.index) {
+            if e.sub == 0 && others {
+                if len != 1 {
+                    return Err(bad);
+                }
+                (DataType::UInt8, Access::R, kind::RAM, 1)
+            } else {
+                let typ = match dcf::network_variable(e.index) {
+                    Some(nv) => nv.typ,
+                    None => unsigned_of(len).ok_or(bad)?,
+                };
+                if typ.wire_size() != Some(len) {
+                    return Err(bad);
+                }
+                let access = Access(Access::READ | Access::WRITE | Access::PDO);
+                (typ, access, kind::RAM, dcf::element_size(typ))
+            }
+        } else {
+            let a = e.attr.ok_or(bad)?;
+            let mut acc = 0u8;
+            if a & attr::READ != 0 {
+                acc |= Access::READ;
+            }
+            if a & attr::WRITE != 0 {
+                acc |= Access::WRITE;
+            }
+            if a & attr::PDO_MAPP != 0 {
+                acc |= Access::PDO;
+            }
+            match a & attr::TYPE_MASK {
+                attr::BOOLEAN => (DataType::Bool, Access(acc), kind::RAM, 1),
+                attr::VISIBLE_STRING => (DataType::VString, Access(acc), kind::RAM_VSTRING, len),
+                attr::NUMERIC => {
+                    let t = unsigned_of(len).ok_or(bad)?;
+                    (t, Access(acc), kind::RAM, dcf::element_size(t))
+                }
+                _ => (DataType::Domain, Access(acc), kind::RAM, len),
+            }
+        };
+        if typ == DataType::Bool && e.data.first().is_some_and(|b| *b > 1) {
+            return Err(bad);
+        }
+        let place = self.place(first, typ, dcf::element_size(typ))?;
+        Ok(NewSub {
+            index: e.index,
+            sub: e.sub,
+            typ,
+            access,
+            kind: k,
+            size: u32::try_from(size).map_err(|_| bad)?,
+            initial: Initial::Wire(e.data),
+            place,
+        })
+    }
+
+    fn place(&self, first: &Entry<'a>, typ: DataType, size: usize) -> Result<Place, CopKernel> {
+        if self.image_len == 0 || typ.wire_size().is_none() {
+            return Ok(Place::Pool);
+        }
+        let at = if self.c.has_addresses() {
+            let word = self
+                .c
+                .addressed()
+                .find(|(x, _)| x.position == first.position)
+                .and_then(|(_, w)| w);
+            match word {
+                Some(w) => u32::from(w),
+                None => return Ok(Place::Pool),
+            }
+        } else {
+            match dcf::rule_offset(first.index, first.sub) {
+                Some((area, off, _)) => {
+                    let base = match area {
+                        PiArea::Input => self.input_base,
+                        PiArea::Output => self.output_base,
+                    };
+                    base.checked_add(off).ok_or(CopKernel::DynNoMemory)?
+                }
+                None => return Ok(Place::Pool),
+            }
+        };
+        let end = (at as usize)
+            .checked_add(size)
+            .ok_or(CopKernel::DynNoMemory)?;
+        if end > self.image_len {
+            return Err(CopKernel::DynNoMemory);
+        }
+        Ok(Place::Image(at))
+    }
+
+    /// The new indices in ascending order.
+    pub fn new_index_list(&self) -> impl Iterator<Item = u16> + '_ {
+        let mut last: Option<u16> = None;
+        core::iter::from_fn(move || {
+            let next = self
+                .c
+                .entries()
+                .filter(|e| !self.exists(e.index) && last.is_none_or(|l| e.index > l))
+                .map(|e| e.index)
+                .min()?;
+            last = Some(next);
+            Some(next)
+        })
+    }
+
+    /// The subindices of new object `index` in ascending order, each with
+    /// its last value from the container.
+    pub fn new_subs_of(
+        &self,
+        index: u16,
+    ) -> impl Iterator<Item = Result<NewSub<'a>, CopKernel>> + '_ {
+        let mut last: Option<u8> = None;
+        let mut count_done = !self.needs_count(index);
+        core::iter::from_fn(move || {
+            if !count_done {
+                count_done = true;
+                last = Some(0);
+                let highest = self
+                    .c
+                    .entries()
+                    .filter(|e| e.index == index)
+                    .map(|e| e.sub)
+                    .max()
+                    .unwrap_or(0);
+                return Some(Ok(NewSub {
+                    index,
+                    sub: 0,
+                    typ: DataType::UInt8,
+                    access: Access::R,
+                    kind: kind::RAM,
+                    size: 1,
+                    initial: Initial::Count(highest),
+                    place: Place::Pool,
+                }));
+            }
+            let sub = self
+                .c
+                .entries()
+                .filter(|e| e.index == index && last.is_none_or(|l| e.sub > l))
+                .map(|e| e.sub)
+                .min()?;
+            last = Some(sub);
+            let e = self.last_occurrence(index, sub)?;
+            let first = self.first_occurrence(&e);
+            Some(self.describe(&first, &e))
+        })
+    }
+
+    /// The final value of `index`/`sub` after the build: the container's
+    /// last entry for it, else what `candidate` holds.
+    fn final_uint(&self, candidate: &ObjectDictionary, index: u16, sub: u8) -> u64 {
+        match self.last_occurrence(index, sub) {
+            Some(e) => value::le_to_u64(e.data),
+            None => candidate.read_uint(index, sub).unwrap_or(0),
+        }
+    }
+
+    /// True when `e` is the first entry of the container that belongs to
+    /// its PDO (either of the PDO's two objects).
+    fn first_of_pdo(&self, e: &Entry<'a>) -> bool {
+        let Some(p) = PdoIndex::of(e.index) else {
+            return false;
+        };
+        !self
+            .c
+            .entries()
+            .take_while(|x| x.position < e.position)
+            .any(|x| PdoIndex::of(x.index).is_some_and(|q| q.dir == p.dir && q.number == p.number))
+    }
+
+    /// The PDOs the container touches, each once.
+    fn touched_pdos(&self) -> impl Iterator<Item = PdoIndex> + '_ {
+        self.c
+            .entries()
+            .filter(move |e| self.first_of_pdo(e))
+            .filter_map(|e| PdoIndex::of(e.index))
+    }
+
+    /// Checks the final state of every PDO the container touches against
+    /// `candidate`, the dictionary with the new user part (module docs).
+    pub fn check_pdos(&self, candidate: &ObjectDictionary) -> Result<(), CopKernel> {
+        for p in self.touched_pdos() {
+            let (commu, mapp) = (p.commu(), p.mapp());
+            if candidate.find_entry(commu).is_none() || candidate.find_entry(mapp).is_none() {
+                return Err(CopKernel::DynInvalidConfig);
+            }
+            if !self.exists(commu) && self.exists(mapp) {
+                // A new PDO would be valid before its static mapping could
+                // be rewritten: not supported.
+                return Err(CopKernel::DynInvalidConfig);
+            }
+            let cob = self.final_uint(candidate, commu, 1) as u32;
+            if cob & COB_INVALID == 0 {
+                check_identifier(cob, crate::config::CDRV_CAN20B)
+                    .map_err(|_| CopKernel::CobIllegalCanId)?;
+                let capacity = match p.dir {
+                    Direction::Rx => crate::config::PDO_MAX_RXPDO_IN_OBD,
+                    Direction::Tx => crate::config::PDO_MAX_TXPDO_IN_OBD,
+                };
+                if usize::from(p.number) >= capacity {
+                    return Err(CopKernel::CobNoFreeEntry);
+                }
+                if p.dir == Direction::Tx && self.cob_id_shared(candidate, p, cob) {
+                    return Err(CopKernel::CobAlreadyExist);
+                }
+            }
+            let count = self.final_uint(candidate, mapp, 0);
+            let count = usize::try_from(count).unwrap_or(usize::MAX);
+            if count > PDO_MAX_MAPPENTRIES {
+                return Err(CopKernel::PdoErrorMapp);
+            }
+            let mut entries = [0u32; PDO_MAX_MAPPENTRIES];
+            for (i, slot) in entries.iter_mut().enumerate().take(count) {
+                let sub = u8::try_from(i + 1).map_err(|_| CopKernel::PdoErrorMapp)?;
+                if candidate.find(mapp, sub).is_err() {
+                    return Err(CopKernel::PdoErrorMapp);
+                }
+                *slot = self.final_uint(candidate, mapp, sub) as u32;
+            }
+            mapping::check_mapping(
+                candidate,
+                p.dir,
+                entries.get(..count).unwrap_or(&[]),
+                mapping::RULES,
+            )
+            .map_err(|_| CopKernel::PdoErrorMapp)?;
+        }
+        Ok(())
+    }
+
+    fn cob_id_shared(&self, candidate: &ObjectDictionary, p: PdoIndex, cob: u32) -> bool {
+        candidate
+            .entries()
+            .filter_map(|e| PdoIndex::of(e.index()))
+            .filter(|q| q.dir == Direction::Tx && q.role == Role::Commu && q.number != p.number)
+            .any(|q| {
+                let other = self.final_uint(candidate, q.commu(), 1) as u32;
+                other & COB_INVALID == 0 && other & 0x1FFF_FFFF == cob & 0x1FFF_FFFF
+            })
+    }
+
+    /// True when the existing object `index`/`sub` takes the container's
+    /// values (exists before the build and is writable).
+    fn writes_existing(&self, index: u16, sub: u8) -> bool {
+        self.exists(index)
+            && self
+                .od
+                .find(index, sub)
+                .is_ok_and(|o| o.access().writable())
+    }
+
+    /// Writes the container's values into `stack` in the order of the
+    /// module docs; `stack` already has the new user part. `snapshot`
+    /// (at least [`Plan::snapshot_bytes`]) first receives every value that
+    /// will change; if a write is refused the values are put back and the
+    /// refusal is returned.
+    pub fn apply(
+        &self,
+        stack: &mut Stack,
+        snapshot: &mut [u8],
+        now: Ticks,
+    ) -> Result<(), CopKernel> {
+        let mut used = 0usize;
+        let mut seq = Sequence::new(self);
+        while let Some(w) = seq.next(self, stack.od()) {
+            let seen = records(snapshot.get(..used).unwrap_or(&[]))
+                .any(|(i, s, _)| i == w.index && s == w.sub);
+            if !seen {
+                used = record(stack.od(), snapshot, used, w.index, w.sub)?;
+            }
+        }
+        let records = snapshot.get(..used).unwrap_or(&[]);
+        let mut seq = Sequence::new(self);
+        let mut result = Ok(());
+        while let Some(w) = seq.next(self, stack.od()) {
+            if let Err(e) = write_one(stack, records, w, now) {
+                result = Err(e);
+                break;
+            }
+        }
+        if result.is_err() {
+            restore(stack.od(), records);
+        }
+        result
+    }
+}
+
+/// Appends the current value of `index`/`sub` to the snapshot.
+fn record(
+    od: &ObjectDictionary,
+    buf: &mut [u8],
+    at: usize,
+    index: u16,
+    sub: u8,
+) -> Result<usize, CopKernel> {
+    let obj = od.find(index, sub).map_err(|e| e.kernel)?;
+    let cap = obj.native_size().map_err(|e| e.kernel)?;
+    let data_at = at + RECORD_HEADER;
+    let dst = buf
+        .get_mut(data_at..data_at + cap)
+        .ok_or(CopKernel::DynNoMemory)?;
+    let n = od
+        .peek(&obj, ByteOrder::Native, dst)
+        .map_err(|e| e.kernel)?;
+    let len = u16::try_from(n).map_err(|_| CopKernel::DynNoMemory)?;
+    let head = buf.get_mut(at..data_at).ok_or(CopKernel::DynNoMemory)?;
+    let i = index.to_le_bytes();
+    let l = len.to_le_bytes();
+    head.copy_from_slice(&[i[0], i[1], sub, l[0], l[1]]);
+    Ok(data_at + n)
+}
+
+/// The snapshot records: (index, sub, native bytes).
+fn records(buf: &[u8]) -> impl Iterator<Item = (u16, u8, &[u8])> {
+    let mut at = 0usize;
+    core::iter::from_fn(move || {
+        let h = buf.get(at..at + RECORD_HEADER)?;
+        let index = u16::from_le_bytes([*h.first()?, *h.get(1)?]);
+        let sub = *h.get(2)?;
+        let len = usize::from(u16::from_le_bytes([*h.get(3)?, *h.get(4)?]));
+        let data = buf.get(at + RECORD_HEADER..at + RECORD_HEADER + len)?;
+        at += RECORD_HEADER + len;
+        Some((index, sub, data))
+    })
+}
+
+/// Puts every snapshot value back, without checks or callbacks.
+fn restore(od: &ObjectDictionary, snapshot: &[u8]) {
+    for (index, sub, data) in records(snapshot) {
+        if let Ok(obj) = od.find(index, sub) {
+            if let Ok(staged) = od.stage(&obj, ByteOrder::Native, data) {
+                let _ = od.store(&obj, &staged, data);
+            }
+        }
+    }
+}
+
+fn write_one(
+    stack: &mut Stack,
+    snapshot: &[u8],
+    w: Write<'_>,
+    now: Ticks,
+) -> Result<(), CopKernel> {
+    match w.op {
+        Op::Value(data) => stack
+            .write_object(w.index, w.sub, ByteOrder::Wire, data, now)
+            .map_err(|e| e.kernel),
+        Op::Uint(v) => {
+            let obj = stack.od().find(w.index, w.sub).map_err(|e| e.kernel)?;
+            let n = obj.data_type().wire_size().unwrap_or(0).min(8);
+            let bytes = v.to_le_bytes();
+            stack
+                .write_object(
+                    w.index,
+                    w.sub,
+                    ByteOrder::Wire,
+                    bytes.get(..n).unwrap_or(&[]),
+                    now,
+                )
+                .map_err(|e| e.kernel)
+        }
+        Op::Original => {
+            let Some((_, _, data)) =
+                records(snapshot).find(|(i, s, _)| *i == w.index && *s == w.sub)
+            else {
+                return Ok(());
+            };
+            // Only a COB-ID that was valid before gets its value back (an
+            // invalid one was never touched).
+            let v = value::native_to_u64(data).unwrap_or(u64::from(COB_INVALID));
+            if v & u64::from(COB_INVALID) != 0 {
+                return Ok(());
+            }
+            stack
+                .write_object(w.index, w.sub, ByteOrder::Native, data, now)
+                .map_err(|e| e.kernel)
+        }
+    }
+}
+
+/// The write sequence, generated step by step so that it can read the
+/// dictionary as it is while the writes go on.
+#[derive(Clone, Debug)]
+struct Sequence<'a> {
+    step: Step,
+    it: dcf::Entries<'a>,
+}
+
+impl<'a> Sequence<'a> {
+    fn new(p: &Plan<'a>) -> Self {
+        Sequence {
+            step: Step::Invalidate,
+            it: p.c.entries(),
+        }
+    }
+
+    fn next(&mut self, p: &Plan<'a>, od: &ObjectDictionary) -> Option<Write<'a>> {
+        loop {
+            if self.step == Step::Done {
+                return None;
+            }
+            let Some(e) = self.it.next() else {
+                self.step = match self.step {
+                    Step::Invalidate => Step::ZeroCount,
+                    Step::ZeroCount => Step::Plain,
+                    Step::Plain => Step::PdoValues,
+                    Step::PdoValues => Step::Counts,
+                    Step::Counts => Step::CobIds,
+                    Step::CobIds | Step::Done => Step::Done,
+                };
+                self.it = p.c.entries();
+                continue;
+            };
+            if let Some(w) = self.emit(p, od, &e) {
+                return Some(w);
+            }
+        }
+    }
+
+    fn emit(&self, p: &Plan<'a>, od: &ObjectDictionary, e: &Entry<'a>) -> Option<Write<'a>> {
+        let last = || {
+            p.last_occurrence(e.index, e.sub)
+                .is_some_and(|l| l.position == e.position)
+        };
+        let value = Write {
+            index: e.index,
+            sub: e.sub,
+            op: Op::Value(e.data),
+        };
+        match self.step {
+            Step::Plain => {
+                return (!is_pdo_param(e.index) && p.writes_existing(e.index, e.sub))
+                    .then_some(value);
+            }
+            Step::Done => return None,
+            _ => {}
+        }
+        let q = PdoIndex::of(e.index)?;
+        match self.step {
+            Step::Invalidate => {
+                if !p.first_of_pdo(e) || !p.writes_existing(q.commu(), 1) {
+                    return None;
+                }
+                let cur = od.read_uint(q.commu(), 1).ok()?;
+                (cur & u64::from(COB_INVALID) == 0).then_some(Write {
+                    index: q.commu(),
+                    sub: 1,
+                    op: Op::Uint(cur | u64::from(COB_INVALID)),
+                })
+            }
+            Step::ZeroCount => {
+                (p.first_of_pdo(e) && p.writes_existing(q.mapp(), 0)).then_some(Write {
+                    index: q.mapp(),
+                    sub: 0,
+                    op: Op::Uint(0),
+                })
+            }
+            Step::PdoValues => {
+                let special =
+                    (q.role == Role::Commu && e.sub == 1) || (q.role == Role::Mapp && e.sub == 0);
+                (!special && p.writes_existing(e.index, e.sub)).then_some(value)
+            }
+            Step::Counts => {
+                (q.role == Role::Mapp && e.sub == 0 && last() && p.writes_existing(e.index, 0))
+                    .then_some(value)
+            }
+            Step::CobIds => {
+                if q.role == Role::Commu && e.sub == 1 {
+                    return (last() && p.writes_existing(e.index, 1)).then_some(value);
+                }
+                // A touched PDO whose COB-ID the container does not name
+                // gets its own value back.
+                let named = p.last_occurrence(q.commu(), 1).is_some();
+                (!named && p.first_of_pdo(e) && p.writes_existing(q.commu(), 1)).then_some(Write {
+                    index: q.commu(),
+                    sub: 1,
+                    op: Op::Original,
+                })
+            }
+            Step::Plain | Step::Done => None,
+        }
+    }
+}
+
+/// Re-applies the values of an installed dynamic OD to the objects with an
+/// index in `from..=to` (after the stack restored their defaults on NMT
+/// reset node / reset communication). Existing objects get the values only
+/// when they are writable, as at the build.
+pub fn reapply(od: &ObjectDictionary, installed: &Installed, from: u16, to: u16) {
+    for e in dcf::entries_of_index_segment(installed.values) {
+        if !(from..=to).contains(&e.index) {
+            continue;
+        }
+        let Ok(obj) = od.find(e.index, e.sub) else {
+            continue;
+        };
+        let is_static = is_static(od, installed.original_user, e.index);
+        if is_static && !obj.access().writable() {
+            continue;
+        }
+        if let Ok(staged) = od.stage(&obj, ByteOrder::Wire, e.data) {
+            let _ = od.store(&obj, &staged, e.data);
+        }
+    }
+}
+
+fn is_static(od: &ObjectDictionary, original_user: &[ObdEntry], index: u16) -> bool {
+    let part = Part::of(index);
+    (part != Part::User
+        && od
+            .part(part)
+            .binary_search_by_key(&index, |e| e.index())
+            .is_ok())
+        || original_user
+            .binary_search_by_key(&index, |e| e.index())
+            .is_ok()
+}
+
+/// True when two of the subindices in `subs` that live in the memory range
+/// `image` share a byte (each counted with its `storage_len`).
+pub fn image_overlaps(image: &[AtomicU8], subs: &[super::ObdSubEntry]) -> bool {
+    let start = image.as_ptr() as usize;
+    let end = start + image.len();
+    let span = |s: &super::ObdSubEntry| {
+        let a = s.m_pCurrent as usize;
+        (a >= start && a < end).then(|| (a, a + s.size().max(1)))
+    };
+    subs.iter().enumerate().any(|(i, a)| {
+        let Some((a0, a1)) = span(a) else {
+            return false;
+        };
+        subs.iter()
+            .skip(i + 1)
+            .any(|b| span(b).is_some_and(|(b0, b1)| a0 < b1 && b0 < a1))
+    })
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,806 @@
+//! Whole-stack tests of the dynamic object dictionary (seed manual L-1087d):
+//! containers built with `cop::od::dcf::encode`, applied with
+//! `DynPool::build` to a stack on the simulated bus, read back through the
+//! dictionary and through this library's SDO client and server; PDOs
+//! carrying network variables between two nodes; refusals that must leave
+//! the dictionary and the PDOs exactly as they were.
+
+use core::sync::atomic::{AtomicBool, AtomicU8, Ordering};
+
+use cop::ccm::{NmtCommand, Stack};
+use cop::error::CopKernel;
+use cop::event::NmtState;
+use cop::ffi::od_table::ObdCbParam;
+use cop::od::dcf::{EntrySpec, PiParams, encode, encoded_len};
+use cop::od::dynamic::DynPool;
+use cop::od::{Access, ByteOrder, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl, event};
+use cop::pdo::PDO_MAX_MAPPENTRIES;
+use cop::pdo::decl::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
+use cop::port::Ticks;
+use cop::sdo::client::{ClientParam, Direction, SdocState};
+use cop::sim::{SimBus, SimPort};
+use cop::wire::sdo::Multiplexer;
+
+/// A node's static dictionary. Each expansion has its own variables and
+/// its own pool, so tests never share state.
+///
+/// | index | content |
+/// |---|---|
+/// | 0x1000 | U32 const |
+/// | 0x1001 | U8 ro error register |
+/// | 0x1017 | U16 rw heartbeat, default 0 |
+/// | 0x1018 | identity, U32 const |
+/// | 0x1400/0x1600 | RPDO 1, invalid, empty mapping |
+/// | 0x1800/0x1A00 | TPDO 1, invalid, empty mapping |
+/// | 0x2000 | U8 rw mappable |
+/// | 0x2010 | U16 rw whose callback refuses writes while `REFUSE` is set |
+macro_rules! node {
+    ($name:ident) => {
+        #[allow(dead_code)]
+        mod $name {
+            use super::*;
+
+            pub static POOL: DynPool<4096> = DynPool::new();
+            pub static REFUSE: AtomicBool = AtomicBool::new(false);
+
+            unsafe extern "C" fn refuse(param: *mut ObdCbParam) -> u32 {
+                // SAFETY: the dictionary passes a valid parameter block.
+                let p = unsafe { &*param };
+                if p.m_ObdEvent == event::PRE_WRITE && REFUSE.load(Ordering::Relaxed) {
+                    CopKernel::ObdAccessViolation.code()
+                } else {
+                    0
+                }
+            }
+
+            static DEVICE: [u8; 4] = 0x0001_0191u32.to_ne_bytes();
+            static S1000: [ObdSubEntry; 1] =
+                [ObdSubEntry::rom(0, DataType::UInt32, Access::R, &DEVICE)];
+            static ERR: [AtomicU8; 1] = decl::zeroed();
+            static S1001: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+                0,
+                DataType::UInt8,
+                Access::R,
+                &ERR,
+                Some(&[0]),
+            )];
+            static HB: [AtomicU8; 2] = decl::zeroed();
+            static HB_DEF: [u8; 2] = 0u16.to_ne_bytes();
+            static S1017: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+                0,
+                DataType::UInt16,
+                Access::SRW,
+                &HB,
+                Some(&HB_DEF),
+            )];
+            static VENDOR: [u8; 4] = 0x0000_0123u32.to_ne_bytes();
+            static S1018: [ObdSubEntry; 2] = [
+                ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[1]),
+                ObdSubEntry::rom(1, DataType::UInt32, Access::R, &VENDOR),
+            ];
+            static V1400: CommuVars = CommuVars::new();
+            static D1400: CommuDefaults = CommuDefaults::new(0x8000_0200, 255, 0, 0);
+            static S1400: [ObdSubEntry; 5] = commu_subs(&V1400, &D1400);
+            static V1600: MappVars = MappVars::new();
+            static D1600: MappDefaults = MappDefaults::new(&[]);
+            static S1600: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1600, &D1600);
+            static V1800: CommuVars = CommuVars::new();
+            static D1800: CommuDefaults = CommuDefaults::new(0x8000_0180, 255, 0, 0);
+            static S1800: [ObdSubEntry; 5] = commu_subs(&V1800, &D1800);
+            static V1A00: MappVars = MappVars::new();
+            static D1A00: MappDefaults = MappDefaults::new(&[]);
+            static S1A00: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1A00, &D1A00);
+            static V2000: [AtomicU8; 1] = decl::zeroed();
+            static S2000: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+                0,
+                DataType::UInt8,
+                Access::PRW,
+                &V2000,
+                Some(&[0]),
+            )];
+            static V2010: [AtomicU8; 2] = decl::zeroed();
+            static S2010: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+                0,
+                DataType::UInt16,
+                Access::RW,
+                &V2010,
+                Some(&[0, 0]),
+            )];
+
+            static GENERIC: [ObdEntry; 8] = [
+                ObdEntry::new(0x1000, &S1000, None),
+                ObdEntry::new(0x1001, &S1001, None),
+                ObdEntry::new(0x1017, &S1017, None),
+                ObdEntry::new(0x1018, &S1018, None),
+                ObdEntry::new(0x1400, &S1400, None),
+                ObdEntry::new(0x1600, &S1600, None),
+                ObdEntry::new(0x1800, &S1800, None),
+                ObdEntry::new(0x1A00, &S1A00, None),
+            ];
+            static MANUFACTURER: [ObdEntry; 2] = [
+                ObdEntry::new(0x2000, &S2000, None),
+                ObdEntry::new(0x2010, &S2010, Some(refuse)),
+            ];
+
+            pub fn od() -> ObjectDictionary {
+                ObjectDictionary::new(&GENERIC, &MANUFACTURER, &[]).unwrap()
+            }
+        }
+    };
+}
+
+/// One node on the bus.
+struct Node {
+    stack: Stack,
+    port: SimPort,
+}
+
+impl Node {
+    fn new(bus: &SimBus, od: ObjectDictionary, id: u8) -> Node {
+        let mut port = bus.attach(64);
+        let mut stack = Stack::new(od, id).unwrap();
+        while stack.drain(&mut port, bus.now()).is_some() {}
+        stack.connect().unwrap();
+        while stack.drain(&mut port, bus.now()).is_some() {}
+        Node { stack, port }
+    }
+
+    fn now(&self) -> Ticks {
+        self.port.bus().now()
+    }
+
+    fn build(
+        &mut self,
+        pool: &'static DynPool<4096>,
+        c: &[u8],
+        image: Option<&'static [AtomicU8]>,
+    ) -> Result<cop::od::dynamic::BuildInfo, CopKernel> {
+        let now = self.now();
+        let r = pool.build(&mut self.stack, &mut self.port, now, c, image);
+        while self.stack.drain(&mut self.port, now).is_some() {}
+        r
+    }
+
+    fn destroy(&mut self, pool: &'static DynPool<4096>) {
+        let now = self.now();
+        pool.destroy(&mut self.stack, &mut self.port, now).unwrap();
+        while self.stack.drain(&mut self.port, now).is_some() {}
+    }
+
+    fn read(&self, index: u16, sub: u8) -> Vec<u8> {
+        let mut b = [0u8; 256];
+        let n = self
+            .stack
+            .read_object(index, sub, ByteOrder::Wire, &mut b)
+            .unwrap_or_else(|e| panic!("{index:04X}sub{sub}: {e:?}"));
+        b[..n].to_vec()
+    }
+
+    fn uint(&self, index: u16, sub: u8) -> u64 {
+        self.stack.od().read_uint(index, sub).unwrap()
+    }
+
+    fn command(&mut self, cmd: NmtCommand) {
+        self.stack.exec_command(cmd).unwrap();
+        let now = self.now();
+        while self.stack.drain(&mut self.port, now).is_some() {}
+    }
+
+    fn cycle(&mut self) {
+        let now = self.now();
+        self.stack.process(&mut self.port, now, |_, _| {});
+    }
+}
+
+/// Everything observable of a node: every value of every subindex (CPU
+/// order), the object list with types and access, and the PDO module's
+/// view of its PDOs.
+#[derive(Debug, PartialEq)]
+struct Snapshot {
+    values: Vec<(u16, u8, u8, u8, Vec<u8>)>,
+    pdos: Vec<(u16, Option<u32>)>,
+}
+
+fn snapshot(s: &Stack) -> Snapshot {
+    let od = s.od();
+    let mut values = Vec::new();
+    for e in od.entries() {
+        for sub in 0..od.sub_count(e).min(256) {
+            let Ok(obj) = od.find(e.index(), sub as u8) else {
+                continue;
+            };
+            let mut b = [0u8; 512];
+            let n = od.peek(&obj, ByteOrder::Native, &mut b).unwrap_or(0);
+            values.push((
+                e.index(),
+                sub as u8,
+                obj.data_type().code(),
+                obj.access().0,
+                b[..n].to_vec(),
+            ));
+        }
+    }
+    let pdos = (0x1400..0x1410)
+        .chain(0x1800..0x1810)
+        .map(|i| (i, s.pdo().cob_id(i).map(|c| c.raw())))
+        .collect();
+    Snapshot { values, pdos }
+}
+
+/// `(index, sub, attribute, value)` of one container entry.
+type Spec = (u16, u8, u8, &'static [u8]);
+
+/// A container from `(index, sub, attribute, value)`.
+fn container(
+    entries: &[(u16, u8, u8, &[u8])],
+    addresses: Option<&[u16]>,
+    pi: Option<&PiParams>,
+) -> Vec<u8> {
+    let specs: Vec<EntrySpec<'_>> = entries
+        .iter()
+        .map(|(index, sub, attr, data)| EntrySpec {
+            index: *index,
+            sub: *sub,
+            data,
+            attr: *attr,
+        })
+        .collect();
+    let n = encoded_len(&specs, addresses, true, pi).unwrap();
+    let mut out = vec![0u8; n];
+    encode(&specs, addresses, true, pi, &mut out).unwrap();
+    out
+}
+
+const U32_1A00_1: [u8; 4] = 0xA4C0_0108u32.to_le_bytes();
+const U32_1A00_2: [u8; 4] = 0xA580_0310u32.to_le_bytes();
+const U32_1601_1: [u8; 4] = 0xA040_0108u32.to_le_bytes();
+
+/// The main sample: existing objects (heartbeat, a read-only identity
+/// entry that is ignored, TPDO 1 reconfigured in an order the CiA 301
+/// procedure would refuse), a new RPDO 2, network variables of seed Bild 8
+/// (0xA4C0 sub 1..3, 0xA580 sub 3) and an input 0xA040 sub 1, and new
+/// manufacturer objects of every attribute type.
+fn sample_entries() -> Vec<Spec> {
+    vec![
+        (0x1017, 0, 0x70, &[0xF4, 0x01]),
+        (0x1018, 1, 0x30, &[0x99, 0x09, 0, 0]),
+        (0x1800, 1, 0x70, &[0x81, 0x01, 0, 0]),
+        (0x1800, 2, 0x70, &[0xFE]),
+        (0x1A00, 0, 0x70, &[2]),
+        (0x1A00, 1, 0x70, &U32_1A00_1),
+        (0x1A00, 2, 0x70, &U32_1A00_2),
+        (0x1401, 0, 0x30, &[5]),
+        (0x1401, 1, 0x70, &[0x01, 0x03, 0, 0]),
+        (0x1401, 2, 0x70, &[0xFF]),
+        (0x1601, 0, 0x70, &[1]),
+        (0x1601, 1, 0x70, &U32_1601_1),
+        (0xA040, 0, 0x30, &[1]),
+        (0xA040, 1, 0x70, &[0]),
+        (0xA4C0, 0, 0x30, &[3]),
+        (0xA4C0, 1, 0xF0, &[0x11]),
+        (0xA4C0, 2, 0xF0, &[0x22]),
+        (0xA4C0, 3, 0xF0, &[0x33]),
+        (0xA580, 0, 0x30, &[3]),
+        (0xA580, 3, 0xF0, &[0x34, 0x12]),
+        (0x2100, 0, 0x28, b"dynamic"),
+        (0x2101, 0, 0x60, &[1, 2, 3]),
+        (0x2102, 0, 0x70, &[0x78, 0x56, 0x34, 0x12]),
+        (0x2103, 0, 0xE1, &[1]),
+    ]
+}
+
+node!(build_sample);
+#[test]
+fn container_values_are_read_back() {
+    let bus = SimBus::new();
+    let mut n = Node::new(&bus, build_sample::od(), 1);
+    let c = container(&sample_entries(), None, None);
+    let info = n.build(&build_sample::POOL, &c, None).unwrap();
+    assert!(build_sample::POOL.is_in_use());
+    // 0x1401, 0x1601, 0xA040, 0xA4C0, 0xA580, 0x2100..0x2103.
+    assert_eq!(info.new_indices, 9);
+    for (index, sub, _, data) in sample_entries() {
+        if (index, sub) == (0x1018, 1) {
+            continue;
+        }
+        assert_eq!(n.read(index, sub), data, "{index:04X}sub{sub}");
+    }
+    assert_eq!(
+        n.uint(0x1018, 1),
+        0x123,
+        "read-only objects keep the firmware's value"
+    );
+    // Types and access of new objects (seed 2.1.2, 2.1.4, table 2).
+    let od = n.stack.od();
+    let t = |i, s| {
+        let o = od.find(i, s).unwrap();
+        (o.data_type(), o.access().0)
+    };
+    assert_eq!(t(0xA4C0, 1), (DataType::UInt8, 0x0B));
+    assert_eq!(t(0xA580, 3), (DataType::UInt16, 0x0B));
+    assert_eq!(t(0xA040, 1), (DataType::UInt8, 0x0B));
+    assert_eq!(t(0xA4C0, 0), (DataType::UInt8, 0x01));
+    assert_eq!(t(0x2100, 0), (DataType::VString, 0x01));
+    assert_eq!(t(0x2101, 0), (DataType::Domain, 0x03));
+    assert_eq!(t(0x2102, 0), (DataType::UInt32, 0x03));
+    assert_eq!(t(0x2103, 0), (DataType::Bool, 0x0B));
+    assert!(
+        od.find(0xA580, 1).is_err(),
+        "subindices the container leaves out do not exist"
+    );
+    // The PDO module took over both PDOs.
+    assert_eq!(n.stack.pdo().cob_id(0x1800).map(|c| c.raw()), Some(0x181));
+    assert_eq!(n.stack.pdo().cob_id(0x1401).map(|c| c.raw()), Some(0x301));
+    // Numbers are stored in the CPU's byte order.
+    let mut b = [0u8; 4];
+    n.stack
+        .read_object(0x2102, 0, ByteOrder::Native, &mut b)
+        .unwrap();
+    assert_eq!(u32::from_ne_bytes(b), 0x1234_5678);
+}
+
+node!(image_rule);
+static IMAGE_RULE: [AtomicU8; 32] = decl::zeroed();
+#[test]
+fn network_variables_are_placed_by_the_offset_rule() {
+    let bus = SimBus::new();
+    let mut n = Node::new(&bus, image_rule::od(), 1);
+    let c = container(&sample_entries(), None, None);
+    let info = n.build(&image_rule::POOL, &c, Some(&IMAGE_RULE)).unwrap();
+    // Inputs: 0xA040 sub 1 at 0. Outputs from 8 (next multiple of 8):
+    // seed Bild 8, three BYTEs at +0..+2, the WORD of sub 3 at +4.
+    assert_eq!(
+        info.pi,
+        PiParams {
+            total: 14,
+            input_offset: 0,
+            input_size: 1,
+            output_offset: 8,
+            output_size: 6
+        }
+    );
+    let img = decl::get(&IMAGE_RULE);
+    assert_eq!(&img[8..11], &[0x11, 0x22, 0x33]);
+    assert_eq!(&img[12..14], &0x1234u16.to_ne_bytes());
+    // The image is the variable: writing it changes the object.
+    IMAGE_RULE[9].store(0x5A, Ordering::Relaxed);
+    assert_eq!(n.read(0xA4C0, 2), [0x5A]);
+    // New objects outside 0xA000 stay in the pool without address segment.
+    assert_eq!(n.read(0x2102, 0), [0x78, 0x56, 0x34, 0x12]);
+}
+
+node!(image_address);
+static IMAGE_ADDRESS: [AtomicU8; 64] = decl::zeroed();
+#[test]
+fn address_segment_and_parameter_segment_win() {
+    let bus = SimBus::new();
+    let mut n = Node::new(&bus, image_address::od(), 1);
+    // Candidates in container order: A040.1, A4C0.1..3, A580.3, 2100,
+    // 2101, 2102, 2103.
+    let addr = [40u16, 20, 21, 22, 24, 0xFFFF, 0xFFFF, 32, 0xFFFF];
+    let pi = PiParams {
+        total: 48,
+        input_offset: 40,
+        input_size: 8,
+        output_offset: 16,
+        output_size: 24,
+    };
+    let c = container(&sample_entries(), Some(&addr), Some(&pi));
+    let info = n
+        .build(&image_address::POOL, &c, Some(&IMAGE_ADDRESS))
+        .unwrap();
+    assert_eq!(info.pi, pi);
+    let img = decl::get(&IMAGE_ADDRESS);
+    assert_eq!(&img[20..23], &[0x11, 0x22, 0x33]);
+    assert_eq!(&img[24..26], &0x1234u16.to_ne_bytes());
+    assert_eq!(&img[32..36], &0x1234_5678u32.to_ne_bytes());
+    assert_eq!(n.read(0x2100, 0), b"dynamic", "strings stay in the pool");
+}
+
+node!(overlap);
+static IMAGE_OVERLAP: [AtomicU8; 64] = decl::zeroed();
+#[test]
+fn variables_sharing_bytes_or_outside_the_image_are_refused() {
+    let bus = SimBus::new();
+    let mut n = Node::new(&bus, overlap::od(), 1);
+    let before = snapshot(&n.stack);
+    let addr = [40u16, 20, 21, 22, 21, 0xFFFF, 0xFFFF, 32, 0xFFFF];
+    let c = container(&sample_entries(), Some(&addr), None);
+    assert_eq!(
+        n.build(&overlap::POOL, &c, Some(&IMAGE_OVERLAP)),
+        Err(CopKernel::DynInvalidConfig)
+    );
+    let addr = [40u16, 20, 21, 22, 63, 0xFFFF, 0xFFFF, 32, 0xFFFF];
+    let c = container(&sample_entries(), Some(&addr), None);
+    assert_eq!(
+        n.build(&overlap::POOL, &c, Some(&IMAGE_OVERLAP)),
+        Err(CopKernel::DynNoMemory)
+    );
+    assert_eq!(snapshot(&n.stack), before);
+    assert!(!overlap::POOL.is_in_use());
+    assert!(
+        decl::get(&IMAGE_OVERLAP).iter().all(|b| *b == 0),
+        "image untouched"
+    );
+}
+
+node!(refusals);
+#[test]
+fn refused_containers_change_nothing() {
+    let bus = SimBus::new();
+    let mut n = Node::new(&bus, refusals::od(), 1);
+    let before = snapshot(&n.stack);
+    let cases: Vec<(Vec<Spec>, CopKernel)> = vec![
+        // Mapping object 0x1602 missing (seed 2.1.2).
+        (
+            vec![(0x1402, 1, 0x70, &[0x02, 0x04, 0, 0x80])],
+            CopKernel::DynInvalidConfig,
+        ),
+        // Mapping without communication object.
+        (vec![(0x1A05, 0, 0x70, &[0])], CopKernel::DynInvalidConfig),
+        // A mapped object that does not exist.
+        (
+            vec![
+                (0x1A00, 1, 0x70, &[0x08, 0x01, 0x00, 0x30]),
+                (0x1A00, 0, 0x70, &[1]),
+            ],
+            CopKernel::PdoErrorMapp,
+        ),
+        // More than 64 bits.
+        (
+            vec![
+                (0x1A00, 0, 0x70, &[3]),
+                (0x1A00, 1, 0x70, &[0x20, 0x00, 0x02, 0x21]),
+                (0x1A00, 2, 0x70, &[0x20, 0x00, 0x02, 0x21]),
+                (0x1A00, 3, 0x70, &[0x20, 0x00, 0x02, 0x21]),
+                (0x2102, 0, 0xF0, &[0; 4]),
+            ],
+            CopKernel::PdoErrorMapp,
+        ),
+        // Restricted COB-ID (CiA 301 7.3.5).
+        (
+            vec![(0x1800, 1, 0x70, &[0x01, 0, 0, 0])],
+            CopKernel::CobIllegalCanId,
+        ),
+        // 11-bit COB-ID above 0x7FF.
+        (
+            vec![(0x1800, 1, 0x70, &[0x00, 0x08, 0, 0])],
+            CopKernel::CobIllegalCanId,
+        ),
+        // TPDO 9 beyond PDO_MAX_TXPDO_IN_OBD (8).
+        (
+            vec![
+                (0x1808, 1, 0x70, &[0x81, 0x02, 0, 0]),
+                (0x1A08, 0, 0x70, &[0]),
+            ],
+            CopKernel::CobNoFreeEntry,
+        ),
+        // Two TPDOs, one COB-ID.
+        (
+            vec![
+                (0x1800, 1, 0x70, &[0x81, 0x01, 0, 0]),
+                (0x1801, 1, 0x70, &[0x81, 0x01, 0, 0]),
+                (0x1A01, 0, 0x70, &[0]),
+            ],
+            CopKernel::CobAlreadyExist,
+        ),
+        // A subindex an existing object does not have.
+        (
+            vec![(0x1017, 1, 0x70, &[0, 0])],
+            CopKernel::ObdSubindexNotExist,
+        ),
+        // Indices that cannot be created.
+        (vec![(0x0005, 0, 0x70, &[0])], CopKernel::ObdIndexNotExist),
+        (vec![(0xFFFF, 0, 0x70, &[0])], CopKernel::ObdIndexNotExist),
+        // A value of the wrong length for an existing object.
+        (
+            vec![(0x1017, 0, 0x70, &[1, 2, 3])],
+            CopKernel::ObdValueLengthError,
+        ),
+        // Network variable of the wrong size for its type (UNSIGNED16).
+        (vec![(0xA580, 1, 0x70, &[1])], CopKernel::DynInvalidConfig),
+        // A BOOLEAN of value 2.
+        (vec![(0x2103, 0, 0xE1, &[2])], CopKernel::DynInvalidConfig),
+        // A new object without type information and two different sizes.
+        (
+            vec![(0x2104, 0, 0x70, &[1]), (0x2104, 0, 0x70, &[1, 2])],
+            CopKernel::DynInvalidConfig,
+        ),
+    ];
+    for (entries, code) in cases {
+        let c = container(&entries, None, None);
+        assert_eq!(
+            n.build(&refusals::POOL, &c, None),
+            Err(code),
+            "{entries:04X?}"
+        );
+        assert_eq!(snapshot(&n.stack), before, "{entries:04X?}");
+        assert!(!refusals::POOL.is_in_use());
+    }
+}
+
+node!(malformed);
+#[test]
+fn malformed_containers_are_refused_without_change() {
+    let bus = SimBus::new();
+    let mut n = Node::new(&bus, malformed::od(), 1);
+    let before = snapshot(&n.stack);
+    let pi = PiParams {
+        total: 16,
+        input_offset: 0,
+        input_size: 8,
+        output_offset: 8,
+        output_size: 8,
+    };
+    let addr = [0u16, 8, 9, 10, 12, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF];
+    let good = container(&sample_entries(), Some(&addr), Some(&pi));
+    let put = |b: &mut Vec<u8>, at: usize, v: u32| b[at..at + 4].copy_from_slice(&v.to_le_bytes());
+    let get = |b: &Vec<u8>, at: usize| u32::from_le_bytes(b[at..at + 4].try_into().unwrap());
+    let mut bad: Vec<(String, Vec<u8>)> = Vec::new();
+    for len in 0..good.len() {
+        let mut b = good[..len].to_vec();
+        // Also with the size field matching the truncated length, so that
+        // the segment checks (not only the size check) see it.
+        bad.push((format!("truncated to {len}"), b.clone()));
+        if len >= 4 {
+            put(&mut b, 0, len as u32);
+            bad.push((format!("truncated to {len}, size field fixed"), b));
+        }
+    }
+    for at in (0..40).step_by(4).filter(|a| *a != 4) {
+        for delta in [1i64, -1, 0x100, -0x100] {
+            let mut b = good.clone();
+            let v = get(&b, at);
+            put(&mut b, at, (i64::from(v) + delta) as u32);
+            bad.push((format!("header field {at} {delta:+}"), b));
+        }
+    }
+    // Each segment moved onto the next one.
+    for (a, b_) in [(8usize, 16usize), (16, 24), (24, 32)] {
+        let mut b = good.clone();
+        let o = get(&b, b_);
+        put(&mut b, a, o);
+        bad.push((format!("segment {a} onto {b_}"), b));
+    }
+    // Every attribute with a reserved bit or two type bits.
+    let ext = get(&good, 24) as usize;
+    for i in 0..sample_entries().len() {
+        for bits in [0x02u8, 0x04, 0x18] {
+            let mut b = good.clone();
+            b[ext + i] |= bits;
+            bad.push((format!("attribute {i} | {bits:#04x}"), b));
+        }
+    }
+    // Every entry's size field one up and one down.
+    let mut at = get(&good, 8) as usize + 4;
+    for _ in 0..sample_entries().len() {
+        let size = get(&good, at + 3);
+        for s in [size + 1, size.wrapping_sub(1)] {
+            let mut b = good.clone();
+            put(&mut b, at + 3, s);
+            bad.push((format!("entry size at {at}: {s}"), b));
+        }
+        at += 7 + size as usize;
+    }
+    for (what, b) in &bad {
+        let r = n.build(&malformed::POOL, b, None);
+        assert!(r.is_err(), "{what} accepted");
+        assert_eq!(snapshot(&n.stack), before, "{what}");
+        assert!(!malformed::POOL.is_in_use(), "{what}");
+    }
+    assert!(bad.len() > 700, "{} cases", bad.len());
+    n.build(&malformed::POOL, &good, None).unwrap();
+}
+
+node!(rollback);
+#[test]
+fn a_refused_write_midway_puts_everything_back() {
+    let bus = SimBus::new();
+    let mut n = Node::new(&bus, rollback::od(), 1);
+    let before = snapshot(&n.stack);
+    rollback::REFUSE.store(true, Ordering::Relaxed);
+    // 0x1017 and TPDO 1 are written before 0x2010 refuses.
+    let mut entries = sample_entries();
+    entries.push((0x2010, 0, 0x70, &[1, 2]));
+    let c = container(&entries, None, None);
+    assert_eq!(
+        n.build(&rollback::POOL, &c, None),
+        Err(CopKernel::ObdAccessViolation)
+    );
+    assert_eq!(snapshot(&n.stack), before);
+    assert!(!rollback::POOL.is_in_use());
+    rollback::REFUSE.store(false, Ordering::Relaxed);
+    n.build(&rollback::POOL, &c, None).unwrap();
+    assert_eq!(n.uint(0x2010, 0), 0x0201);
+}
+
+node!(twice);
+#[test]
+fn build_twice_destroy_and_rebuild() {
+    let bus = SimBus::new();
+    let mut n = Node::new(&bus, twice::od(), 1);
+    let before = snapshot(&n.stack);
+    let tpdo_cob = n.uint(0x1800, 1);
+    let c = container(&sample_entries(), None, None);
+    n.build(&twice::POOL, &c, None).unwrap();
+    assert_eq!(
+        n.build(&twice::POOL, &c, None),
+        Err(CopKernel::NoFreeInstance),
+        "a second build needs DynDestroyOd first"
+    );
+    n.command(NmtCommand::StartRemoteNode);
+    n.destroy(&twice::POOL);
+    assert!(!twice::POOL.is_in_use());
+    // Seed 5.2: PDO defaults back, PDO module PRE-OPERATIONAL, node state
+    // unchanged. Other static objects keep the container's values.
+    assert_eq!(n.stack.nmt_state(), NmtState::Operational);
+    assert_eq!(n.uint(0x1800, 1), tpdo_cob);
+    assert_eq!(n.uint(0x1A00, 0), 0);
+    assert!(n.stack.od().find_entry(0xA4C0).is_none());
+    assert_eq!(n.uint(0x1017, 0), 500);
+    n.stack
+        .write_object(0x1017, 0, ByteOrder::Wire, &[0, 0], n.now())
+        .unwrap();
+    assert_eq!(snapshot(&n.stack), before);
+    // Destroy without a build resets the PDO module too and succeeds.
+    n.destroy(&twice::POOL);
+    n.build(&twice::POOL, &c, None).unwrap();
+    assert_eq!(n.read(0xA580, 3), [0x34, 0x12]);
+}
+
+node!(small_pool);
+static SMALL: DynPool<256> = DynPool::new();
+#[test]
+fn a_pool_too_small_is_no_memory() {
+    let bus = SimBus::new();
+    let mut n = Node::new(&bus, small_pool::od(), 1);
+    let before = snapshot(&n.stack);
+    let c = container(&sample_entries(), None, None);
+    let now = n.now();
+    assert_eq!(
+        SMALL.build(&mut n.stack, &mut n.port, now, &c, None),
+        Err(CopKernel::DynNoMemory)
+    );
+    assert_eq!(snapshot(&n.stack), before);
+    assert!(!SMALL.is_in_use());
+}
+
+node!(resets);
+#[test]
+fn nmt_resets_keep_the_dynamic_od_in_force() {
+    let bus = SimBus::new();
+    let mut n = Node::new(&bus, resets::od(), 1);
+    let c = container(&sample_entries(), None, None);
+    n.build(&resets::POOL, &c, None).unwrap();
+    n.stack
+        .write_object(0x1017, 0, ByteOrder::Wire, &[7, 0], n.now())
+        .unwrap();
+    n.stack
+        .write_object(0x1401, 2, ByteOrder::Wire, &[1], n.now())
+        .unwrap();
+    n.command(NmtCommand::ResetCommunication);
+    assert_eq!(n.stack.nmt_state(), NmtState::PreOperational);
+    assert_eq!(n.uint(0x1017, 0), 500);
+    assert_eq!(n.uint(0x1401, 2), 0xFF);
+    assert_eq!(n.uint(0x1800, 1), 0x181);
+    assert_eq!(n.stack.pdo().cob_id(0x1800).map(|c| c.raw()), Some(0x181));
+    n.command(NmtCommand::ResetNode);
+    assert_eq!(n.uint(0x1A00, 1), 0xA4C0_0108);
+}
+
+node!(net_a);
+node!(net_b);
+static IMAGE_A: [AtomicU8; 32] = decl::zeroed();
+static IMAGE_B: [AtomicU8; 32] = decl::zeroed();
+static SDO_BUF: [AtomicU8; 16] = decl::zeroed();
+
+#[test]
+fn two_nodes_exchange_network_variables_by_pdo() {
+    let bus = SimBus::new();
+    let mut a = Node::new(&bus, net_a::od(), 1);
+    let mut b = Node::new(&bus, net_b::od(), 2);
+    // Node 1 sends its outputs 0xA4C0 sub 1 and 0xA580 sub 3 with TPDO 1
+    // (0x181, event timer 10 ms); node 2 receives them into its inputs
+    // 0xA040 sub 1 and 0xA100 sub 3 with RPDO 1.
+    let ca = container(
+        &[
+            (0x1800, 1, 0x70, &[0x81, 0x01, 0, 0]),
+            (0x1800, 2, 0x70, &[0xFF]),
+            (0x1800, 5, 0x70, &[10, 0]),
+            (0x1A00, 0, 0x70, &[2]),
+            (0x1A00, 1, 0x70, &U32_1A00_1),
+            (0x1A00, 2, 0x70, &U32_1A00_2),
+            (0xA4C0, 0, 0x30, &[1]),
+            (0xA4C0, 1, 0xF0, &[0]),
+            (0xA580, 0, 0x30, &[3]),
+            (0xA580, 3, 0xF0, &[0, 0]),
+        ],
+        None,
+        None,
+    );
+    let map_b2 = 0xA100_0310u32.to_le_bytes();
+    let cb = container(
+        &[
+            (0x1400, 1, 0x70, &[0x81, 0x01, 0, 0]),
+            (0x1400, 2, 0x70, &[0xFF]),
+            (0x1600, 0, 0x70, &[2]),
+            (0x1600, 1, 0x70, &U32_1601_1),
+            (0x1600, 2, 0x70, &map_b2),
+            (0xA040, 0, 0x30, &[1]),
+            (0xA040, 1, 0x70, &[0]),
+            (0xA100, 0, 0x30, &[3]),
+            (0xA100, 3, 0x70, &[0, 0]),
+        ],
+        None,
+        None,
+    );
+    let pa = a.build(&net_a::POOL, &ca, Some(&IMAGE_A)).unwrap().pi;
+    let pb = b.build(&net_b::POOL, &cb, Some(&IMAGE_B)).unwrap().pi;
+    a.command(NmtCommand::StartRemoteNode);
+    b.command(NmtCommand::StartRemoteNode);
+    // The application writes its outputs into the process image.
+    let out = pa.output_offset as usize;
+    IMAGE_A[out].store(0xC3, Ordering::Relaxed);
+    decl::set::<2>(
+        (&IMAGE_A[out + 4..out + 6]).try_into().unwrap(),
+        0xBEEFu16.to_ne_bytes(),
+    );
+    for _ in 0..30 {
+        a.cycle();
+        b.cycle();
+        bus.advance_ms(1);
+    }
+    let inp = pb.input_offset as usize;
+    assert_eq!(IMAGE_B[inp].load(Ordering::Relaxed), 0xC3);
+    let w = [
+        IMAGE_B[inp + 4].load(Ordering::Relaxed),
+        IMAGE_B[inp + 5].load(Ordering::Relaxed),
+    ];
+    assert_eq!(u16::from_ne_bytes(w), 0xBEEF);
+
+    // Node 1 reads node 2's dynamic objects with this library's SDO client.
+    let p = ClientParam {
+        tx_cob: 0x602,
+        rx_cob: 0x582,
+        server_node: 2,
+        timeout_ticks: 0,
+    };
+    a.stack.define_sdo_client(&mut a.port, 0x1280, p).unwrap();
+    for (index, sub, want) in [
+        (0xA100u16, 3u8, vec![0xEF, 0xBE]),
+        (0xA040, 1, vec![0xC3]),
+        (0x1600, 2, map_b2.to_vec()),
+        (0xA100, 0, vec![3]),
+    ] {
+        let now = a.now();
+        a.stack
+            .sdo_client_start(
+                &mut a.port,
+                now,
+                0x1280,
+                Direction::Upload,
+                Multiplexer::new(index, sub),
+                &SDO_BUF,
+                SDO_BUF.len(),
+                0,
+            )
+            .unwrap();
+        for _ in 0..5 {
+            b.cycle();
+            a.cycle();
+            bus.advance_ms(1);
+        }
+        let (state, abort) = a.stack.sdoc().state(0x1280).unwrap();
+        let len = a.stack.sdoc().transferred(0x1280).unwrap();
+        assert_eq!(
+            (state, abort),
+            (SdocState::Finished, 0),
+            "{index:04X}sub{sub}"
+        );
+        assert_eq!(
+            decl::get(&SDO_BUF)[..len as usize],
+            want[..],
+            "{index:04X}sub{sub}"
+        );
+    }
+}
