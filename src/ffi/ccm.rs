@@ -196,7 +196,7 @@ pub unsafe extern "C" fn CcmReadObject(
         return CopKernel::InvalidParam.code();
     }
     // SAFETY: checked for NULL; the caller owns the size variable.
-    let cap = usize::from(unsafe { *pSize_p });
+    let cap = obd_size_len(unsafe { *pSize_p });
     // SAFETY: the caller guarantees `cap` writable bytes at pDstData_p.
     let out = unsafe { core::slice::from_raw_parts_mut(pDstData_p as *mut u8, cap) };
     let r = global::with(|i| {
@@ -234,7 +234,7 @@ pub unsafe extern "C" fn CcmWriteObject(
     pSrcData_p: *const c_void,
     Size_p: tObdSize,
 ) -> tCopKernel {
-    let n = usize::from(Size_p);
+    let n = obd_size_len(Size_p);
     if pSrcData_p.is_null() && n > 0 {
         return CopKernel::InvalidParam.code();
     }
@@ -373,7 +373,7 @@ fn define_var(od: &ObjectDictionary, v: &tVarParam) -> CopResult {
     };
     use core::sync::atomic::Ordering::Relaxed;
     if v.m_bValidFlag & var_valid::SIZE != 0 {
-        let size = usize::from(v.m_Size);
+        let size = obd_size_len(v.m_Size);
         if let Some(w) = obj.data_type().wire_size() {
             if !crate::od::value::size_fits(obj.data_type(), size) || size < w {
                 return Err(CopKernel::ObdValueLengthError);

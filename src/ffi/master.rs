@@ -338,7 +338,7 @@ pub unsafe extern "C" fn CcmSdocStartTransfer(
         1 => crate::sdo::client::Direction::Upload,
         _ => return CopKernel::SdocInvalidParam.code(),
     };
-    let len = usize::from(p.m_DataLen);
+    let len = super::types::obd_size_len(p.m_DataLen);
     if p.m_pData.is_null() {
         return CopKernel::InvalidParam.code();
     }

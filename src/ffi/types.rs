@@ -33,6 +33,13 @@ pub type tProgMonEvent = tFastByte;
 pub type tCcmInitCall = tFastByte;
 /// `tObdSize`.
 pub type tObdSize = crate::ffi::od_table::ObdSize;
+/// A `tObdSize` as a byte count. `tObdSize` is a BYTE, WORD or DWORD
+/// (`OBD_SUPPORTED_OBJ_SIZE`), so the conversion is lossless on every
+/// target with 32-bit or wider pointers (`usize::from` has no `u32` form).
+#[inline]
+pub const fn obd_size_len(size: tObdSize) -> usize {
+    size as usize
+}
 /// `tCanId`: WORD for CAN 2.0A, DWORD for CAN 2.0B (`CDRV_CAN_SPEC`).
 #[cfg(not(cdrv_can20b))]
 pub type tCanId = WORD;
