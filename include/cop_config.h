@@ -1,0 +1,91 @@
+/*
+ * cop_config.h - the link-time configuration signature.
+ *
+ * Some switches of copcfg.h change the binary interface between the
+ * application and the library: the width of tObdSize, the size of
+ * tSrdoMappParam, the layout of tCdrvMsg. The library is built from the same
+ * copcfg.h (COP_CONFIG_DIR) and exports exactly one byte whose name encodes
+ * those switches:
+ *
+ *   CopLibAbi_os<1|2|4>_gr<8|16|32|64>_sm<0|1>_pm<0|1>_ts<0|1>_id<11|29>
+ *
+ *   os  sizeof(tObdSize)            (OBD_SUPPORTED_OBJ_SIZE)
+ *   gr  SRDO_GRANULARITY            (SRDO_MAX_MAPPENTRIES = 128 / gr)
+ *   sm  SRDO_USE_STATIC_MAPPING
+ *   pm  PDO_USE_STATIC_MAPPING
+ *   ts  CDRV_TIMESTAMP              (tCdrvMsg.m_Time)
+ *   id  CDRV_CAN_SPEC               (tCanId WORD or DWORD)
+ *
+ * This header builds the same name from the application's configuration.
+ * objdef.h stores its address in tObdRamParam.m_pbAbiSignature, so an
+ * application compiled with a configuration the library was not built with
+ * fails to link ("undefined reference to CopLibAbi_..."), instead of
+ * misreading structures at run time. CcmInitCANopen also compares the
+ * address (kCopWrongSignature).
+ */
+#ifndef COP_CONFIG_H
+#define COP_CONFIG_H
+
+#include "cop_types.h"
+
+/* Normalise each switch to the token used in the name. */
+#if (OBD_SUPPORTED_OBJ_SIZE == OBD_OBJ_SIZE_BIG)
+#define COP_ABI_OS_ os4
+#elif (OBD_SUPPORTED_OBJ_SIZE == OBD_OBJ_SIZE_MIDDLE)
+#define COP_ABI_OS_ os2
+#else
+#define COP_ABI_OS_ os1
+#endif
+
+#if (SRDO_GRANULARITY == 64)
+#define COP_ABI_GR_ gr64
+#elif (SRDO_GRANULARITY == 32)
+#define COP_ABI_GR_ gr32
+#elif (SRDO_GRANULARITY == 16)
+#define COP_ABI_GR_ gr16
+#else
+#define COP_ABI_GR_ gr8
+#endif
+
+#if (SRDO_USE_STATIC_MAPPING != FALSE)
+#define COP_ABI_SM_ sm1
+#else
+#define COP_ABI_SM_ sm0
+#endif
+
+#if (PDO_USE_STATIC_MAPPING != FALSE)
+#define COP_ABI_PM_ pm1
+#else
+#define COP_ABI_PM_ pm0
+#endif
+
+#if (CDRV_TIMESTAMP != FALSE)
+#define COP_ABI_TS_ ts1
+#else
+#define COP_ABI_TS_ ts0
+#endif
+
+#if (CDRV_CAN_SPEC == CAN20B)
+#define COP_ABI_ID_ id29
+#else
+#define COP_ABI_ID_ id11
+#endif
+
+/* Two levels so that the arguments are expanded before pasting. */
+#define COP_ABI_NAME_PASTE_(os, gr, sm, pm, ts, id) CopLibAbi_##os##_##gr##_##sm##_##pm##_##ts##_##id
+#define COP_ABI_NAME_(os, gr, sm, pm, ts, id)       COP_ABI_NAME_PASTE_(os, gr, sm, pm, ts, id)
+
+/* The signature symbol of this configuration (defined by the library). */
+#define COP_ABI_SIGNATURE COP_ABI_NAME_(COP_ABI_OS_, COP_ABI_GR_, COP_ABI_SM_, COP_ABI_PM_, COP_ABI_TS_, COP_ABI_ID_)
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+extern CONST BYTE COP_ABI_SIGNATURE;
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* COP_CONFIG_H */

@@ -1,0 +1,11 @@
+/*
+ * srdo.h - compatibility header: the SYS TEC stack declared part of its API
+ * here. In this library everything lives in cop.h (types in cop_types.h);
+ * this file only keeps existing #include lines working.
+ */
+#ifndef COP_COMPAT_SRDO_H
+#define COP_COMPAT_SRDO_H
+
+#include "cop.h"
+
+#endif
