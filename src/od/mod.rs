@@ -15,6 +15,7 @@
 pub mod dcf;
 pub mod decl;
 pub mod dynamic;
+pub mod eds;
 mod types;
 pub mod value;
 
