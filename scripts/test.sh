@@ -27,6 +27,8 @@ run_stage() {
         cargo clippy --all-targets -- -D warnings
         cargo clippy --lib --no-default-features -- -D warnings
         cargo clippy --lib --features srdo-static-mapping,srdo-granularity-16 -- -D warnings
+        CARGO_TARGET_DIR=target/dcf2bin cargo fmt --manifest-path tools/dcf2bin/Cargo.toml -- --check
+        CARGO_TARGET_DIR=target/dcf2bin cargo clippy --manifest-path tools/dcf2bin/Cargo.toml --all-targets -- -D warnings
         ;;
     rust)
         stage "cargo test (default switches)"
@@ -35,6 +37,8 @@ run_stage() {
         CARGO_TARGET_DIR=target/variant-a cargo test -q --features srdo-static-mapping,srdo-granularity-16,cdrv-timestamp
         stage "cargo test (no GFC, no program monitor, SRVT checked before 2nd frame, dummy mapping, gaps)"
         CARGO_TARGET_DIR=target/variant-b cargo test -q --no-default-features --features srdo-check-srvt-before-1strx,srdo-dummy-mapping,srdo-allow-gaps
+        stage "dcf2bin (host tool; its python-canopen comparisons need scripts/setup.sh)"
+        CARGO_TARGET_DIR=target/dcf2bin cargo test -q --manifest-path tools/dcf2bin/Cargo.toml
         ;;
     header)
         stage "cbindgen --verify (include/cop.h is up to date)"
