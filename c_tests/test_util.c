@@ -1,0 +1,396 @@
+/*
+ * test_util.c - checks and helpers shared by the C tests, the application
+ * callbacks and variables the test dictionaries name.
+ */
+#include "test_util.h"
+
+int iTestFailures_g;
+
+int TestDone (const char* pszName_p)
+{
+    if (iTestFailures_g != 0)
+    {
+        printf("%s: %d check(s) FAILED\n", pszName_p, iTestFailures_g);
+        return 1;
+    }
+    printf("%s: all checks passed\n", pszName_p);
+    return 0;
+}
+
+const char* TestKernelName (tCopKernel Ret_p)
+{
+    switch (Ret_p)
+    {
+        case kCopSuccessful: return "kCopSuccessful";
+        case kCopIllegalInstance: return "kCopIllegalInstance";
+        case kCopInvalidInstanceParam: return "kCopInvalidInstanceParam";
+        case kCopNoFreeInstance: return "kCopNoFreeInstance";
+        case kCopWrongSignature: return "kCopWrongSignature";
+        case kCopUnsupportedBtrTable: return "kCopUnsupportedBtrTable";
+        case kCopUnsupportedBtrIndex: return "kCopUnsupportedBtrIndex";
+        case kCopInvalidNodeId: return "kCopInvalidNodeId";
+        case kCopNoResource: return "kCopNoResource";
+        case kCopInvalidParam: return "kCopInvalidParam";
+        case kCopCdrvNoMsg: return "kCopCdrvNoMsg";
+        case kCopCdrvMsgHigh: return "kCopCdrvMsgHigh";
+        case kCopCdrvMsgLow: return "kCopCdrvMsgLow";
+        case kCopCdrvInitError: return "kCopCdrvInitError";
+        case kCopCdrvNoFreeChannel: return "kCopCdrvNoFreeChannel";
+        case kCopCdrvTxBuffHighOverrun: return "kCopCdrvTxBuffHighOverrun";
+        case kCopCdrvTxBuffLowOverrun: return "kCopCdrvTxBuffLowOverrun";
+        case kCopCdrvIllegalBdi: return "kCopCdrvIllegalBdi";
+        case kCopCdrvBusy: return "kCopCdrvBusy";
+        case kCopCdrvInvalidDriverType: return "kCopCdrvInvalidDriverType";
+        case kCopCdrvDriverNotFound: return "kCopCdrvDriverNotFound";
+        case kCopCdrvInvalidBaseAddress: return "kCopCdrvInvalidBaseAddress";
+        case kCopCdrvInvalidParam: return "kCopCdrvInvalidParam";
+        case kCopCdrvInvalidDevNumber: return "kCopCdrvInvalidDevNumber";
+        case kCopCdrvDevAlreadyInUse: return "kCopCdrvDevAlreadyInUse";
+        case kCopCdrvHostOsError: return "kCopCdrvHostOsError";
+        case kCopCobNoFreeEntry: return "kCopCobNoFreeEntry";
+        case kCopCobAlreadyExist: return "kCopCobAlreadyExist";
+        case kCopCobIllegalHdl: return "kCopCobIllegalHdl";
+        case kCopCobIllegalCanId: return "kCopCobIllegalCanId";
+        case kCopCobInvalidCanId: return "kCopCobInvalidCanId";
+        case kCopCobCdrvStateSet: return "kCopCobCdrvStateSet";
+        case kCopCobNoFreeEntryHighBuf: return "kCopCobNoFreeEntryHighBuf";
+        case kCopCobOwnId: return "kCopCobOwnId";
+        case kCopCobWrongCobType: return "kCopCobWrongCobType";
+        case kCopObdIllegalPart: return "kCopObdIllegalPart";
+        case kCopObdIndexNotExist: return "kCopObdIndexNotExist";
+        case kCopObdSubindexNotExist: return "kCopObdSubindexNotExist";
+        case kCopObdReadViolation: return "kCopObdReadViolation";
+        case kCopObdWriteViolation: return "kCopObdWriteViolation";
+        case kCopObdAccessViolation: return "kCopObdAccessViolation";
+        case kCopObdUnknownObjectType: return "kCopObdUnknownObjectType";
+        case kCopObdVarEntryNotExist: return "kCopObdVarEntryNotExist";
+        case kCopObdValueToLow: return "kCopObdValueToLow";
+        case kCopObdValueToHigh: return "kCopObdValueToHigh";
+        case kCopObdValueLengthError: return "kCopObdValueLengthError";
+        case kCopObdIllegalFloat: return "kCopObdIllegalFloat";
+        case kCopObdWrongOdBuilderKey: return "kCopObdWrongOdBuilderKey";
+        case kCopNmtUnknownCommand: return "kCopNmtUnknownCommand";
+        case kCopNmtLifeguardVsHeartbeat: return "kCopNmtLifeguardVsHeartbeat";
+        case kCopNmtBootupNotPossible: return "kCopNmtBootupNotPossible";
+        case kCopNmtHbcWrongCfg: return "kCopNmtHbcWrongCfg";
+        case kCopNmtmSlaveNodeExist: return "kCopNmtmSlaveNodeExist";
+        case kCopNmtmNoFreeSlaveEntry: return "kCopNmtmNoFreeSlaveEntry";
+        case kCopNmtmSlaveEntryNotExist: return "kCopNmtmSlaveEntryNotExist";
+        case kCopNmtStateError: return "kCopNmtStateError";
+        case kCopNmtmInvalidSlaveNodeId: return "kCopNmtmInvalidSlaveNodeId";
+        case kCopSdocInitError: return "kCopSdocInitError";
+        case kCopSdocInvalidParam: return "kCopSdocInvalidParam";
+        case kCopSdocClientNotExist: return "kCopSdocClientNotExist";
+        case kCopSdocBusy: return "kCopSdocBusy";
+        case kCopSdocTransferError: return "kCopSdocTransferError";
+        case kCopSdocWrongMultiplexor: return "kCopSdocWrongMultiplexor";
+        case kCopSdocEntryAlreadyDefined: return "kCopSdocEntryAlreadyDefined";
+        case kCopSdocNoFreeEntry: return "kCopSdocNoFreeEntry";
+        case kCopSdocConfigOrder: return "kCopSdocConfigOrder";
+        case kCopSdosInitError: return "kCopSdosInitError";
+        case kCopSdosServerNotExist: return "kCopSdosServerNotExist";
+        case kCopSdosBusy: return "kCopSdosBusy";
+        case kCopSdosSizeMismatch: return "kCopSdosSizeMismatch";
+        case kCopSdosNoFreeEntry: return "kCopSdosNoFreeEntry";
+        case kCopSdosEntryAlreadyDefined: return "kCopSdosEntryAlreadyDefined";
+        case kCopSdosConfigOrder: return "kCopSdosConfigOrder";
+        case kCopSdosWrongDlc: return "kCopSdosWrongDlc";
+        case kCopSdosWrongCcs: return "kCopSdosWrongCcs";
+        case kCopPdoNotExist: return "kCopPdoNotExist";
+        case kCopPdoLengthExceeded: return "kCopPdoLengthExceeded";
+        case kCopPdoGranularityMismatch: return "kCopPdoGranularityMismatch";
+        case kCopPdoInitError: return "kCopPdoInitError";
+        case kCopPdoErrorPdoEncode: return "kCopPdoErrorPdoEncode";
+        case kCopPdoErrorPdoDecode: return "kCopPdoErrorPdoDecode";
+        case kCopPdoErrorSend: return "kCopPdoErrorSend";
+        case kCopPdoErrorSyncWin: return "kCopPdoErrorSyncWin";
+        case kCopPdoErrorMapp: return "kCopPdoErrorMapp";
+        case kCopPdoVarNotFound: return "kCopPdoVarNotFound";
+        case kCopPdoErrorEmcyPdoLen: return "kCopPdoErrorEmcyPdoLen";
+        case kCopPdoWriteConstObject: return "kCopPdoWriteConstObject";
+        case kCopPdoErrorRxEventTimer: return "kCopPdoErrorRxEventTimer";
+        case kCopLsssResetNode: return "kCopLsssResetNode";
+        case kCopLsssInvalidNodeId: return "kCopLsssInvalidNodeId";
+        case kCopEmccNoFreeProducerEntry: return "kCopEmccNoFreeProducerEntry";
+        case kCopEmccNodeIdNotExist: return "kCopEmccNodeIdNotExist";
+        case kCopEmccNodeIdInvalid: return "kCopEmccNodeIdInvalid";
+        case kCopEmccNodeIdExist: return "kCopEmccNodeIdExist";
+        case kCopDynNoMemory: return "kCopDynNoMemory";
+        case kCopDynInvalidConfig: return "kCopDynInvalidConfig";
+        case kCopHbcEntryNotExist: return "kCopHbcEntryNotExist";
+        case kCopHbcEntryAlreadyExist: return "kCopHbcEntryAlreadyExist";
+        case kCopHbcNoFreeEntry: return "kCopHbcNoFreeEntry";
+        case kCopCfgMaConfigError: return "kCopCfgMaConfigError";
+        case kCopCfgMaSdocTimeOut: return "kCopCfgMaSdocTimeOut";
+        case kCopCfgMaNoErrorCb: return "kCopCfgMaNoErrorCb";
+        case kCopCfgMaNoFreeConfig: return "kCopCfgMaNoFreeConfig";
+        case kCopCfgMaNoConfigData: return "kCopCfgMaNoConfigData";
+        case kCopCfgMaInvaildSdoc: return "kCopCfgMaInvaildSdoc";
+        case kCopCfgMaConfigwithErrors: return "kCopCfgMaConfigwithErrors";
+        case kCopLssmIllegalMode: return "kCopLssmIllegalMode";
+        case kCopLssmIllegalState: return "kCopLssmIllegalState";
+        case kCopLssmBusy: return "kCopLssmBusy";
+        case kCopLssmIllegalCmd: return "kCopLssmIllegalCmd";
+        case kCopLssmTimeout: return "kCopLssmTimeout";
+        case kCopLssmErrorInConfirm: return "kCopLssmErrorInConfirm";
+        case kCopCcmStoreUnvalidState: return "kCopCcmStoreUnvalidState";
+        case kCopCcmStoreHwError: return "kCopCcmStoreHwError";
+        case kCopSrdoNotExist: return "kCopSrdoNotExist";
+        case kCopSrdoGranularityMismatch: return "kCopSrdoGranularityMismatch";
+        case kCopSrdoCfgTimingError: return "kCopSrdoCfgTimingError";
+        case kCopSrdoCfgIdError: return "kCopSrdoCfgIdError";
+        case kCopSrdoCfgCrcError: return "kCopSrdoCfgCrcError";
+        case kCopSrdoNmtError: return "kCopSrdoNmtError";
+        case kCopSrdoInvalidCfg: return "kCopSrdoInvalidCfg";
+        case kCopSrdoInvalid: return "kCopSrdoInvalid";
+        case kCopSrdoRxTxConflict: return "kCopSrdoRxTxConflict";
+        case kCopSrdoIllegalCanId: return "kCopSrdoIllegalCanId";
+        case kCopSrdoCanIdAlreadyInUse: return "kCopSrdoCanIdAlreadyInUse";
+        case kCopSrdoNotInOrder: return "kCopSrdoNotInOrder";
+        case kCopSrdoSctTimeout: return "kCopSrdoSctTimeout";
+        case kCopSrdoSrvtTimeout: return "kCopSrdoSrvtTimeout";
+        case kCopSrdoCanIdNotValid: return "kCopSrdoCanIdNotValid";
+        case kCopSrdoDlcNotValid: return "kCopSrdoDlcNotValid";
+        case kCopSrdoErrorMapp: return "kCopSrdoErrorMapp";
+        case kCopSrdoDataError: return "kCopSrdoDataError";
+        case kCopSrdoLengthExceeded: return "kCopSrdoLengthExceeded";
+        case kCopSrdoNotHandledInApp: return "kCopSrdoNotHandledInApp";
+        case kCopSrdoOverrun: return "kCopSrdoOverrun";
+        case kCopSdomBusy: return "kCopSdomBusy";
+        case kCopSdomInternStructFull: return "kCopSdomInternStructFull";
+        case kCopSdomErrorCbInternError: return "kCopSdomErrorCbInternError";
+        case kCopSdomErrorCbCopError: return "kCopSdomErrorCbCopError";
+        case kCopSrdBusy: return "kCopSrdBusy";
+        case kCopSrdNotRegistered: return "kCopSrdNotRegistered";
+        case kCopSrdNoAnswerSdom: return "kCopSrdNoAnswerSdom";
+        case kCopSrdNotMasterMode: return "kCopSrdNotMasterMode";
+        case kCopSrdNotDynConnection: return "kCopSrdNotDynConnection";
+        case kCopSrdSdomNotUndefSdoc: return "kCopSrdSdomNotUndefSdoc";
+        case kCopMgrTaskDeferred: return "kCopMgrTaskDeferred";
+        case kCopMgrInvalidOperation: return "kCopMgrInvalidOperation";
+        case kCopMgrInvalidParam: return "kCopMgrInvalidParam";
+        case kCopMgrNoFreeEntry: return "kCopMgrNoFreeEntry";
+        case kCopMgrNodeBusy: return "kCopMgrNodeBusy";
+        case kCopMgrSdocTypeAutoRunning: return "kCopMgrSdocTypeAutoRunning";
+        case kCopUserSDOAbort: return "kCopUserSDOAbort";
+        default:                        return "?";
+    }
+}
+
+/* ---- NMT ------------------------------------------------------------------ */
+
+tNmtEvent aTestNmtEvents_g[TEST_MAX_EVENTS];
+unsigned  uTestNmtEventCount_g;
+
+const char* TestNmtEventName (tNmtEvent NmtEvent_p)
+{
+    switch (NmtEvent_p)
+    {
+        case kNmtEvEnterInitialising:      return "kNmtEvEnterInitialising";
+        case kNmtEvResetNode:              return "kNmtEvResetNode";
+        case kNmtEvPreResetCommunication:  return "kNmtEvPreResetCommunication";
+        case kNmtEvResetCommunication:     return "kNmtEvResetCommunication";
+        case kNmtEvPostResetCommunication: return "kNmtEvPostResetCommunication";
+        case kNmtEvEnterPreOperational:    return "kNmtEvEnterPreOperational";
+        case kNmtEvEnterOperational:       return "kNmtEvEnterOperational";
+        case kNmtEvEnterStopped:           return "kNmtEvEnterStopped";
+        default:                           return "?";
+    }
+}
+
+tCopKernel PUBLIC TestNmtRecorder (tNmtEvent NmtEvent_p)
+{
+    if (uTestNmtEventCount_g < TEST_MAX_EVENTS)
+    {
+        aTestNmtEvents_g[uTestNmtEventCount_g++] = NmtEvent_p;
+    }
+    return kCopSuccessful;
+}
+
+void TestNmtClear (void)
+{
+    uTestNmtEventCount_g = 0;
+}
+
+tCopKernel TestInitNode (BYTE bSimNode_p, BYTE bNodeId_p, tObdInitRam fpObdInitRam_p, tCcmNmtEventCallback fpNmt_p)
+{
+    static tCcmInitParam aInitParam[SIM_MAX_NODES];
+    tCcmInitParam* pInit;
+    tCopKernel Ret;
+
+    Ret = SimSelectNode(bSimNode_p);
+    if (Ret != kCopSuccessful)
+    {
+        return Ret;
+    }
+    pInit = &aInitParam[bSimNode_p];
+    memset(pInit, 0, sizeof(*pInit));
+    pInit->m_bInitNodeId = bNodeId_p;
+    pInit->m_BaudIndex = kBdi500kBaud;
+    pInit->m_dwAmr = 0xFFFFFFFFUL;
+    pInit->m_dwAcr = 0;
+    pInit->m_HwParam.m_ZeroBasedCanNo.m_bCanNo = 0;
+    pInit->m_fpCanInterruptEnable = TgtEnableCanInterrupt;
+    pInit->m_fpNmtEventCallback = fpNmt_p;
+    pInit->m_fpObdInitRam = fpObdInitRam_p;
+    return CcmInitCANopen(pInit, kCcmFirstInstance);
+}
+
+/* ---- frames ---------------------------------------------------------------- */
+
+int TestExpectFrame (const char* pszWhat_p, DWORD dwId_p, BYTE bDlc_p, const BYTE* pbData_p)
+{
+    tSimFrame Frame;
+
+    if (!SimTakeSentFrame(&Frame))
+    {
+        printf("%s: expected frame %03lX [%u], bus is empty\n", pszWhat_p, (unsigned long) dwId_p, (unsigned) bDlc_p);
+        iTestFailures_g++;
+        return 0;
+    }
+    if ((Frame.m_dwId != dwId_p) || (Frame.m_bDlc != bDlc_p) || Frame.m_bRtr ||
+        ((bDlc_p > 0) && (pbData_p != NULL) && (memcmp(Frame.m_abData, pbData_p, bDlc_p) != 0)))
+    {
+        unsigned i;
+        printf("%s: got %03lX [%u]", pszWhat_p, (unsigned long) Frame.m_dwId, (unsigned) Frame.m_bDlc);
+        for (i = 0; i < Frame.m_bDlc; i++)
+        {
+            printf(" %02X", (unsigned) Frame.m_abData[i]);
+        }
+        printf(", expected %03lX [%u]", (unsigned long) dwId_p, (unsigned) bDlc_p);
+        for (i = 0; (pbData_p != NULL) && (i < bDlc_p); i++)
+        {
+            printf(" %02X", (unsigned) pbData_p[i]);
+        }
+        printf("\n");
+        iTestFailures_g++;
+        return 0;
+    }
+    return 1;
+}
+
+unsigned TestDrainSent (void)
+{
+    unsigned n = 0;
+
+    while (SimTakeSentFrame(NULL))
+    {
+        n++;
+    }
+    return n;
+}
+
+void TestProcess (unsigned n_p)
+{
+    unsigned i;
+
+    for (i = 0; i < n_p; i++)
+    {
+        (void) CcmProcess();
+    }
+}
+
+/* ---- OBD callbacks ---------------------------------------------------------------- */
+
+BYTE     abTestObdEvents_g[TEST_MAX_OBD_EVENTS];
+unsigned uTestObdEventCount_g;
+tObdSize TestInitWriteSize_g;
+
+void TestObdClear (void)
+{
+    uTestObdEventCount_g = 0;
+    TestInitWriteSize_g = 0;
+}
+
+tCopKernel PUBLIC TestCbVeto (tObdCbParam MEM* pParam_p)
+{
+    if ((pParam_p->m_ObdEvent == kObdEvPreWrite) && (pParam_p->m_pArg != NULL))
+    {
+        WORD wValue;
+        memcpy(&wValue, pParam_p->m_pArg, sizeof(wValue));
+        if (wValue == 0x0BAD)
+        {
+            pParam_p->m_dwAbortCode = SDOAC_VALUE_RANGE_EXCEEDED;
+            return kCopObdValueToHigh;
+        }
+    }
+    return kCopSuccessful;
+}
+
+BYTE bTestCbRefuseEvent_g = 0xFF;
+
+tCopKernel PUBLIC TestCbRecord (tObdCbParam MEM* pParam_p)
+{
+    if (pParam_p->m_ObdEvent == bTestCbRefuseEvent_g)
+    {
+        pParam_p->m_dwAbortCode = SDOAC_DATA_NOT_TRANSF_DUE_LOCAL_CONTROL;
+        return kCopObdAccessViolation;
+    }
+    if (uTestObdEventCount_g < TEST_MAX_OBD_EVENTS)
+    {
+        abTestObdEvents_g[uTestObdEventCount_g++] = pParam_p->m_ObdEvent;
+    }
+    if ((pParam_p->m_ObdEvent == kObdEvInitWrite) && (pParam_p->m_pArg != NULL))
+    {
+        TestInitWriteSize_g = *(tObdSize*) pParam_p->m_pArg;
+    }
+    return kCopSuccessful;
+}
+
+/* ---- SRDO callbacks ------------------------------------------------------------------ */
+
+unsigned   uTestSrdoEvents_g;
+unsigned   uTestSrdoErrors_g;
+WORD       wTestLastSrdoIndex_g;
+tCopKernel TestLastSrdoError_g;
+tCopKernel aTestSrdoErrors_g[TEST_MAX_SRDO_ERRORS];
+unsigned   uTestGfcEvents_g;
+unsigned   uTestProgMonEvents_g;
+
+tCopKernel PUBLIC AppSrdoEvent (WORD wSrdoCommuIndex_p)
+{
+    uTestSrdoEvents_g++;
+    wTestLastSrdoIndex_g = wSrdoCommuIndex_p;
+    return kCopSuccessful;
+}
+
+tCopKernel PUBLIC AppSrdoError (WORD wSrdoCommuIndex_p, tCopKernel ErrorCode_p)
+{
+    if (uTestSrdoErrors_g < TEST_MAX_SRDO_ERRORS)
+    {
+        aTestSrdoErrors_g[uTestSrdoErrors_g] = ErrorCode_p;
+    }
+    uTestSrdoErrors_g++;
+    wTestLastSrdoIndex_g = wSrdoCommuIndex_p;
+    TestLastSrdoError_g = ErrorCode_p;
+    return kCopSuccessful;
+}
+
+#if (SRDO_USE_GFC != FALSE)
+tCopKernel PUBLIC AppGfcEvent (void)
+{
+    uTestGfcEvents_g++;
+    return kCopSuccessful;
+}
+#endif
+
+#if (SRDO_USE_PROGMONITOR != FALSE)
+tCopKernel PUBLIC AppProgMonEvent (tProgMonEvent Event_p)
+{
+    (void) Event_p;
+    uTestProgMonEvents_g++;
+    return kCopSuccessful;
+}
+#endif
+
+/* ---- application variables of objdict_all.h ------------------------------------------- */
+
+tObdUnsigned32 dwTestExtVar_g;
+tObdUnsigned8  bTestExtVarRg_g;
+tObdUnsigned16 wTestExtNoInit_g;
+tObdUnsigned16 awTestExtArray_g[3];
+
+/* ---- application arrays of objdict_min.h ------------------------------------------------ */
+
+tObdUnsigned8 abTestDigitalIn_g[1];
+tObdInteger16 aiTestAnalogIn_g[2];

@@ -1,0 +1,96 @@
+/*
+ * test_util.h - checks and helpers shared by the C tests.
+ *
+ * Every test is a small program: it runs its checks, prints each failing one
+ * with file and line, and returns 0 when all passed (TEST_DONE). A check that
+ * cannot run because the library lacks a feature returns TEST_SKIP (77,
+ * reported by CTest as "Skipped" with the reason printed).
+ */
+#ifndef TEST_UTIL_H
+#define TEST_UTIL_H
+
+#include <stdio.h>
+#include <string.h>
+
+#include "cdrv_sim.h"
+
+#define TEST_SKIP 77
+
+extern int iTestFailures_g;
+
+#define CHECK(cond) \
+    do { if (!(cond)) { printf("%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); iTestFailures_g++; } } while (0)
+
+#define CHECK_EQ(actual, expected) \
+    do { unsigned long long a_ = (unsigned long long) (actual), e_ = (unsigned long long) (expected); \
+         if (a_ != e_) { printf("%s:%d: CHECK_EQ failed: %s = 0x%llX, expected %s = 0x%llX\n", \
+                                __FILE__, __LINE__, #actual, a_, #expected, e_); iTestFailures_g++; } } while (0)
+
+/* Return code check with the names of both codes in the message. */
+#define CHECK_RET(expr, expected) \
+    do { tCopKernel r_ = (tCopKernel) (expr); \
+         if (r_ != (tCopKernel) (expected)) { printf("%s:%d: %s returned 0x%04X (%s), expected 0x%04X (%s)\n", \
+             __FILE__, __LINE__, #expr, (unsigned) r_, TestKernelName(r_), (unsigned) (expected), \
+             TestKernelName((tCopKernel) (expected))); iTestFailures_g++; } } while (0)
+
+#define TEST_DONE(name) TestDone(name)
+
+int         TestDone (const char* pszName_p);
+const char* TestKernelName (tCopKernel Ret_p);
+
+/* NMT callback that records every event (and prints it when verbose). */
+#define TEST_MAX_EVENTS 64
+extern tNmtEvent aTestNmtEvents_g[TEST_MAX_EVENTS];
+extern unsigned  uTestNmtEventCount_g;
+tCopKernel PUBLIC TestNmtRecorder (tNmtEvent NmtEvent_p);
+void        TestNmtClear (void);
+const char* TestNmtEventName (tNmtEvent NmtEvent_p);
+
+/* CcmInitCANopen for simulated node bSimNode_p (0..7) with node-ID
+ * bNodeId_p, the dictionary's init function and an NMT callback. */
+tCopKernel TestInitNode (BYTE bSimNode_p, BYTE bNodeId_p, tObdInitRam fpObdInitRam_p, tCcmNmtEventCallback fpNmt_p);
+
+/* Pops the next frame the nodes sent and compares it (dlc bytes of data).
+ * Prints the difference and counts a failure when it does not match. */
+int  TestExpectFrame (const char* pszWhat_p, DWORD dwId_p, BYTE bDlc_p, const BYTE* pbData_p);
+/* Drops every frame waiting for SimTakeSent; returns how many. */
+unsigned TestDrainSent (void);
+/* Runs CcmProcess of the selected node n times. */
+void TestProcess (unsigned n_p);
+
+/* OBD callback logs (TestCbVeto refuses writes of 0x0BAD; TestCbRecord
+ * records every event). */
+#define TEST_MAX_OBD_EVENTS 64
+extern BYTE     abTestObdEvents_g[TEST_MAX_OBD_EVENTS];
+extern unsigned uTestObdEventCount_g;
+extern tObdSize TestInitWriteSize_g;
+void TestObdClear (void);
+
+/* SRDO callback counters (objdict_all.h declares SRDO objects). */
+extern unsigned uTestSrdoEvents_g;
+extern unsigned uTestSrdoErrors_g;
+extern WORD     wTestLastSrdoIndex_g;
+extern tCopKernel TestLastSrdoError_g;
+#define TEST_MAX_SRDO_ERRORS 16
+extern tCopKernel aTestSrdoErrors_g[TEST_MAX_SRDO_ERRORS];   /* in the order reported */
+extern unsigned uTestGfcEvents_g;
+extern unsigned uTestProgMonEvents_g;
+
+/* Application variables named by objdict_all.h (EXTVAR, EXTARRAY). */
+extern tObdUnsigned32 dwTestExtVar_g;
+extern tObdUnsigned8  bTestExtVarRg_g;
+extern tObdUnsigned16 wTestExtNoInit_g;
+extern tObdUnsigned16 awTestExtArray_g[3];
+
+/* Application arrays named by objdict_min.h (EXTARRAY inputs). */
+extern tObdUnsigned8 abTestDigitalIn_g[1];
+extern tObdInteger16 aiTestAnalogIn_g[2];
+
+/* TestCbRecord refuses this event with kCopObdAccessViolation (0xFF: none). */
+extern BYTE bTestCbRefuseEvent_g;
+
+/* Dictionaries of c_tests/ (whichever the test links). */
+tCopKernel PUBLIC ObdInitRam (void MEM* pInitParam_p);
+tCopKernel PUBLIC ObdInitRamMin (void MEM* pInitParam_p);
+
+#endif

@@ -1,0 +1,128 @@
+/*
+ * cdrv_sim.h - a simulated CAN bus for running CANopen nodes on a PC.
+ *
+ * cdrv_sim.c implements the CAN driver contract of the SYS TEC stack
+ * (every Cdrv* function of cop_app.h) and the target functions (Tgt*) on a
+ * bus that exists only in memory, so that an unchanged application, its
+ * objdict.h and this library run on a host, one process, no hardware:
+ *
+ *  - up to SIM_MAX_NODES nodes. Each node is one instance of the library
+ *    (host builds keep several, see CopSimSelectInstance). SimSelectNode(n)
+ *    makes node n current: the Ccm* calls that follow address its stack and
+ *    the Cdrv* calls the stack makes act on its controller;
+ *  - per node a high- and a low-priority receive queue with the capacities
+ *    the dictionary gave CdrvInit (CDRV_MAX_RX_BUFF_ENTRIES_HIGH/LOW, at
+ *    most SIM_QUEUE_MAX). A node receives only the identifiers it defined
+ *    with CdrvDefineCanId - exactly like a controller with an acceptance
+ *    filter, which shows that the stack subscribes everything it needs -
+ *    into the queue that definition asked for (kMtbHighPrio);
+ *  - a frame a node sends is on the bus at once: every other node with a
+ *    matching filter receives it (a controller does not receive its own
+ *    frames), in the order the frames were sent;
+ *  - receive timestamps (tCdrvMsg.m_Time, current tick) when the
+ *    configuration has CDRV_TIMESTAMP;
+ *  - receive overrun: a frame for a full queue is lost and the node's status
+ *    gets kCdrvRxBuffHighOverrun / kCdrvRxBuffLowOverrun (CdrvGetStatus;
+ *    CdrvResetStatus clears bits);
+ *  - a virtual clock: TgtGetTickCount counts ticks of 100 us and only moves
+ *    with SimAdvanceTicks / SimAdvanceMs, so runs are repeatable;
+ *  - an external node for test harnesses and PC tools: SimInject puts a
+ *    frame on the bus from outside, SimTakeSent hands out the frames the
+ *    nodes sent, oldest first;
+ *  - a trace in candump format ("  can0  702   [1]  00"), printed to stdout
+ *    while enabled (SimSetTrace);
+ *  - fault hooks: refuse the next N transmissions of a node
+ *    (CdrvWriteMsg returns kCopCdrvTxBuffHighOverrun / ...LowOverrun), drop
+ *    the next frame with a given identifier (it never reaches the bus).
+ *
+ * Identifiers: 11-bit values, or 29-bit values with CAN_FRAME_FORMAT_MASK
+ * (bit 29) set in the dwId arguments of this API.
+ *
+ * Typical use (one node, node-ID 2, in a test or on a PC):
+ *
+ *     SimReset();
+ *     SimSetTrace(1);
+ *     SimSelectNode(0);
+ *     CcmInitCANopen(&InitParam, kCcmFirstInstance);
+ *     CcmConnectToNet();
+ *     SimInject(0x000, 0, 2, abStartAll);           // NMT start all
+ *     CcmProcess();
+ *     while (SimTakeSent(&dwId, &bRtr, &bDlc, abData)) { ... }
+ *     SimAdvanceMs(10);
+ *
+ * The simulation is single-threaded, like the CCM API.
+ */
+#ifndef CDRV_SIM_H
+#define CDRV_SIM_H
+
+#include "cop.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define SIM_MAX_NODES     8     /* nodes (library instances) on the bus */
+#define SIM_QUEUE_MAX     64    /* largest receive queue per priority */
+#define SIM_LOG_MAX       1024  /* frames kept for SimTakeSent */
+#define SIM_EXTERNAL_NODE 0xFF  /* sender of frames put on the bus by SimInject */
+
+/* A frame as the bus saw it. */
+typedef struct
+{
+    DWORD m_dwId;           /* identifier, CAN_FRAME_FORMAT_MASK set for 29 bit */
+    BYTE  m_bRtr;           /* 1 = remote request */
+    BYTE  m_bDlc;           /* 0..8 */
+    BYTE  m_abData[8];
+    BYTE  m_bSender;        /* node index, or SIM_EXTERNAL_NODE */
+    DWORD m_dwTick;         /* TgtGetTickCount() when it was on the bus */
+} tSimFrame;
+
+/* Forgets everything: nodes, queues, filters, log, faults; clock to 0;
+ * node 0 selected. Call before CcmInitCANopen of a new scenario. */
+void SimReset (void);
+
+/* Selects the node the next Ccm* and Cdrv* calls address (also selects the
+ * library instance with CopSimSelectInstance). kCopSuccessful, or
+ * kCopIllegalInstance for bNode_p >= SIM_MAX_NODES. */
+tCopKernel SimSelectNode (BYTE bNode_p);
+BYTE       SimSelectedNode (void);
+
+/* The virtual clock. */
+void  SimAdvanceTicks (DWORD dwTicks_p);
+void  SimAdvanceMs (DWORD dwMs_p);
+
+/* Candump-style trace of every frame on the bus to stdout (0 = off). */
+void SimSetTrace (int fOn_p);
+
+/* Puts a frame on the bus from outside (an external node): every node with
+ * a matching filter receives it. Returns the number of nodes that queued
+ * it, or -1 for an invalid DLC. */
+int SimInject (DWORD dwId_p, BYTE bRtr_p, BYTE bDlc_p, CONST BYTE* pbData_p);
+
+/* Takes the oldest frame a node sent (bus order). 1 when a frame was
+ * returned, 0 when none is waiting. pbData_p receives 8 bytes; any pointer
+ * may be NULL. */
+int SimTakeSent (DWORD* pdwId_p, BYTE* pbRtr_p, BYTE* pbDlc_p, BYTE* pbData_p);
+int SimTakeSentFrame (tSimFrame* pFrame_p);
+/* Number of frames waiting for SimTakeSent. */
+unsigned SimSentPending (void);
+
+/* The candump line of a frame ("  can0  702   [1]  00", no newline) into
+ * pszLine_p (at least 64 bytes). Returns its length, -1 for bad arguments. */
+int SimFormatCandump (CONST tSimFrame* pFrame_p, char* pszLine_p, unsigned uSize_p);
+
+/* Fault hooks. */
+void SimRefuseTx (BYTE bNode_p, unsigned uCount_p);   /* next uCount_p CdrvWriteMsg of the node fail */
+void SimDropNextId (DWORD dwId_p);                     /* next frame with this identifier is lost */
+
+/* Inspection (tests). */
+int      SimIsIdDefined (BYTE bNode_p, DWORD dwId_p); /* 0 undefined, 1 low, 2 high priority */
+unsigned SimRxPending (BYTE bNode_p);                  /* frames waiting in both receive queues */
+WORD     SimGetStatus (BYTE bNode_p);                  /* the node's tCdrvStatus bits */
+unsigned SimRxCapacity (BYTE bNode_p, int fHigh_p);    /* queue capacity from CdrvInit */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* CDRV_SIM_H */
