@@ -582,7 +582,10 @@ fn malformed_containers_are_refused_without_change() {
         }
         at += 7 + size as usize;
     }
-    for (what, b) in &bad {
+    // Under Miri (scripts/miri.sh) every 25th case keeps the run short;
+    // the ordinary run takes them all.
+    let stride = if cfg!(miri) { 25 } else { 1 };
+    for (what, b) in bad.iter().step_by(stride) {
         let r = n.build(&malformed::POOL, b, None);
         assert!(r.is_err(), "{what} accepted");
         assert_eq!(snapshot(&n.stack), before, "{what}");
