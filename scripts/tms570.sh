@@ -3,18 +3,39 @@
 # big-endian), links it with arm-none-eabi-gcc against a C main that
 # provides only the documented application symbols, fails on any other
 # undefined symbol, and prints the sizes.
+#
+# Variants (used by scripts/bench.sh for the code-size table; the defaults
+# are the plain link check):
+#   TMS570_VARIANT=name   names the cargo target sub-directory and the image
+#                         (default "arm"; image link_check.elf, others
+#                         link_check-<name>.elf)
+#   TMS570_OPT_LEVEL=z|s  release opt-level (default: Cargo.toml's profile)
+#   TMS570_THUMB=1        Thumb-2 code (-C target-feature=+thumb-mode)
+# Capacities such as COP_SRDO_MAX_SRDO_IN_OBD pass through to build.rs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 T=armebv7r-none-eabihf
 OUT=${CARGO_TARGET_DIR:-target}/tms570
 mkdir -p "$OUT"
+VARIANT=${TMS570_VARIANT:-arm}
+FLAGS=""
+if [ "${TMS570_THUMB:-0}" = 1 ]; then
+    FLAGS="-C target-feature=+thumb-mode"
+fi
+if [ -n "${TMS570_OPT_LEVEL:-}" ]; then
+    export CARGO_PROFILE_RELEASE_OPT_LEVEL=$TMS570_OPT_LEVEL
+fi
 build() { # $1 = extra rustflags, $2 = cargo target dir suffix
+    # The flags go to every crate of the image (core included), so that a
+    # Thumb-2 build is Thumb-2 throughout.
     RUSTC_BOOTSTRAP=1 CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-target}/tms570-$2" \
+        RUSTFLAGS="-C target-cpu=cortex-r4f $1" \
         cargo rustc -q --release --lib --crate-type staticlib -Zbuild-std=core --target $T \
-        -- -C target-cpu=cortex-r4f $1
+        2> >(grep -v -e 'unstable feature specified for `-Ctarget-feature`: `thumb-mode`' \
+            -e 'this feature is not stably supported' -e '^ *|$' -e '^ *= note: this feature' >&2)
     echo "${CARGO_TARGET_DIR:-target}/tms570-$2/$T/release/libcop.a"
 }
-ARM_LIB=$(build "" arm)
+ARM_LIB=$(build "$FLAGS" "$VARIANT")
 echo "archive: $ARM_LIB"
 
 # 1. The archive's undefined symbols: only Cdrv*, Tgt*, App* and mem*.
@@ -30,8 +51,10 @@ if [ -n "$bad" ]; then
 fi
 
 # 2. A real big-endian link against a C main.
+ELF="$OUT/link_check.elf"
+[ "$VARIANT" = arm ] || ELF="$OUT/link_check-$VARIANT.elf"
 CFLAGS="-mcpu=cortex-r4f -mbig-endian -mbe32 -mfloat-abi=hard -mfpu=vfpv3-d16 -Os -ffunction-sections -fdata-sections"
 arm-none-eabi-gcc $CFLAGS -nostdlib -nostartfiles -Wl,--gc-sections -Wl,-e,_start -Wl,-z,noexecstack \
-    -o "$OUT/link_check.elf" scripts/tms570/link_main.c "$ARM_LIB" -lgcc
-echo "linked: $OUT/link_check.elf"
-arm-none-eabi-size "$OUT/link_check.elf"
+    -o "$ELF" scripts/tms570/link_main.c "$ARM_LIB" -lgcc
+echo "linked: $ELF"
+arm-none-eabi-size "$ELF"

@@ -5,6 +5,11 @@
  * App* callbacks through objdef.h) plus the C library's mem* functions,
  * and calls the main API so that the linker pulls the whole stack in.
  * Built with -nostdlib: any other undefined symbol fails the link.
+ *
+ * It also calls the safety API an SRDO application uses (send, GFC,
+ * configuration check, CRC, status byte), so that the image holds every
+ * SRDO/GFC/CRC function a safety node links: scripts/bench.sh measures
+ * the code size of those modules in this image.
  */
 #include <stddef.h>
 
@@ -75,6 +80,12 @@ extern unsigned CcmProcess(void);
 extern unsigned CcmShutDownCANopen(void);
 extern unsigned CcmReadObject(WORD i, BYTE s, void *d, BYTE *n);
 extern unsigned CcmWriteObject(WORD i, BYTE s, const void *d, BYTE n);
+extern unsigned CcmSendSrdo(WORD commu);
+extern unsigned CcmSendGfc(void);
+extern unsigned CcmCheckSrdoConfig(WORD *commu);
+extern unsigned CcmCalcSrdoCrc(WORD commu, WORD *crc);
+extern unsigned CcmGetSrdoState(BYTE *state, WORD commu);
+extern unsigned CcmSetSrdoState(BYTE state, WORD commu);
 
 volatile unsigned sink;
 
@@ -87,6 +98,17 @@ int main(void)
     sink += CcmProcess();
     sink += CcmReadObject(0x1000, 0, buf, &n);
     sink += CcmWriteObject(0x1017, 0, buf, 2);
+    {
+        WORD bad = 0, crc = 0;
+        BYTE st = 0;
+        sink += CcmCheckSrdoConfig(&bad);
+        sink += CcmCalcSrdoCrc(0x1301, &crc);
+        sink += CcmSendSrdo(0x1301);
+        sink += CcmSendGfc();
+        sink += CcmGetSrdoState(&st, 0x1301);
+        sink += CcmSetSrdoState((BYTE)(st | 0x30), 0x1301);
+        sink += bad + crc;
+    }
     sink += CcmShutDownCANopen();
     for (;;) {
     }
