@@ -377,7 +377,7 @@ impl<const N: usize> DynPool<N> {
 
     /// `DynDestroyOd` for Rust: removes the dynamic OD of `stack` and
     /// resets the PDO module as seed manual 5.2 describes
-    /// ([`Stack::destroy_dynamic_od`] has the sequence), then gives the
+    /// (the sequence is in `Stack::destroy_dynamic_od`), then gives the
     /// pool back. Also without a dynamic OD the PDO module is reset (as the
     /// original does). `kCopIllegalInstance` when the stack's dynamic OD
     /// lives in another pool.

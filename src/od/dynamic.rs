@@ -62,6 +62,31 @@
 //! After NMT reset communication (or reset node) the objects the container
 //! wrote get the container's values again, static ones included: the
 //! dynamic OD stays in force until `DynDestroyOd`.
+//!
+//! # Building twice, destroying
+//! A second build without `DynDestroyOd` is refused with
+//! `kCopNoFreeInstance` (the one dynamic OD of the instance is taken, as a
+//! second `CcmInitCANopen` is). `DynDestroyOd` follows seed manual 5.2 (see
+//! [`crate::ccm::Stack`]'s `destroy_dynamic_od`): the PDO module stops,
+//! the dynamic tables go, the PDO parameters of the static dictionary get
+//! their defaults and the PDO module is PRE-OPERATIONAL until the next NMT
+//! start; other static objects keep the values the container gave them.
+//!
+//! # Build switches (seed chapter 4)
+//! * `OBD_USE_DYNAMIC_OD` (build script key; `COP_OBD_USE_DYNAMIC_OD` for
+//!   Rust builds, default on): FALSE leaves the C API without pool, so
+//!   `DynBuildOd` answers `kCopDynNoMemory`. `OBD_DYNAMIC_POOL_SIZE`
+//!   (default 4096) sizes the pool that replaces `COP_MALLOC`.
+//! * `OBD_USER_OD`, `OBD_USE_VARIABLE_SUBINDEX_TAB`: the seed needs both
+//!   for the dynamic OD; here the user part always exists and the new
+//!   subindex tables are built in the pool, so they are accepted and not
+//!   needed.
+//! * `PDO_USE_BIT_MAPPING`, `PDO_GRANULARITY`: the PDO module's rules
+//!   ([`crate::pdo::PDO_USE_BIT_MAPPING`], [`crate::pdo::PDO_GRANULARITY`],
+//!   [`crate::pdo::PDO_MAX_MAPPENTRIES`]) judge every mapping a container
+//!   sets up: a BOOLEAN (attribute 0x01) maps as one bit only with bit
+//!   mapping, and a mapping longer than `PDO_MAX_MAPPENTRIES` entries is
+//!   `kCopPdoErrorMapp`.
 
 use core::sync::atomic::AtomicU8;
 

@@ -17,8 +17,9 @@ USAGE:
 OPTIONS:
     -o, --output <FILE>  where to write the container
                          (default: INPUT with the extension .bin)
-        --c-array <NAME> write C source instead: a `static const unsigned
-                         char NAME[]` holding the container
+        --c-array <NAME> write C source instead (default: INPUT.h), a
+                         `static const unsigned char NAME[]` holding the
+                         container, to #include where DynBuildOd is called
         --node-id <N>    node-ID for $NODEID (default: [DeviceComissioning]
                          NodeID of the file)
         --dump           print the objects (index, subindex, data type,
@@ -151,7 +152,7 @@ fn run(a: &Args) -> Result<(), String> {
         Some(name) => (
             a.output
                 .clone()
-                .unwrap_or_else(|| a.input.with_extension("c")),
+                .unwrap_or_else(|| a.input.with_extension("h")),
             c_source(name, &a.input, &bytes).into_bytes(),
         ),
         None => (
