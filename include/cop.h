@@ -220,7 +220,7 @@ tCopKernel DynDestroyOd(void);
  * Returns kCopSuccessful, or kCopIllegalInstance for an index out of range
  * (or when called from inside a callback).
  */
-uint32_t CopSimSelectInstance(uint8_t bInstance_p);
+tCopKernel CopSimSelectInstance(BYTE bInstance_p);
 #endif
 
 /**

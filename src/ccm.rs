@@ -459,7 +459,7 @@ impl Stack {
     }
 
     fn timers(&mut self, port: &mut impl CanPort, now: Ticks) {
-        if let Some(f) = self.sdo.poll(now) {
+        if let Some(f) = self.sdo.poll(&self.od, now) {
             let _ = port.send(&f, Priority::Low);
         }
         if self.connected && self.state != NmtState::Initialisation {

@@ -251,7 +251,9 @@ pub fn pump(mut next: impl FnMut(&mut Instance, crate::port::Ticks) -> Option<Ev
 /// (or when called from inside a callback).
 #[cfg(feature = "std")]
 #[unsafe(no_mangle)]
-pub extern "C" fn CopSimSelectInstance(bInstance_p: u8) -> u32 {
+pub extern "C" fn CopSimSelectInstance(
+    bInstance_p: super::types::BYTE,
+) -> super::types::tCopKernel {
     if select(usize::from(bInstance_p)) {
         CopKernel::Successful.code()
     } else {

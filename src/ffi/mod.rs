@@ -9,6 +9,9 @@ pub mod dynod;
 pub mod global;
 pub mod master;
 pub mod od_table;
+
+#[cfg(test)]
+mod od_callback_tests;
 pub mod pdo;
 pub mod srdo;
 pub mod stack_callbacks;

@@ -53,6 +53,20 @@ pub struct ObdCbParam {
     pub m_dwAbortCode: u32,
 }
 
+/// `tObdVStringDomain`: what kObdEvWrStringDomain hands to the callback,
+/// which may change the object's size and data pointer before a string or
+/// domain is written.
+#[repr(C)]
+#[derive(Debug)]
+pub struct ObdVStringDomain {
+    /// Number of bytes about to be written.
+    pub m_DownloadSize: ObdSize,
+    /// Current object size (capacity); the callback may change it.
+    pub m_ObjSize: ObdSize,
+    /// Current data pointer; the callback may change it.
+    pub m_pData: *mut c_void,
+}
+
 /// `tObdCallback` (single-instance form).
 pub type ObdCallback = unsafe extern "C" fn(param: *mut ObdCbParam) -> u32;
 
@@ -164,6 +178,8 @@ pub enum CbArg<'a> {
     Data(&'a mut [u8]),
     /// The object size (kObdEvInitWrite).
     Size(&'a mut ObdSize),
+    /// String/domain parameters (kObdEvWrStringDomain).
+    StringDomain(&'a mut ObdVStringDomain),
 }
 
 impl ObdSubEntry {
@@ -464,6 +480,48 @@ impl ObdEntry {
         self.m_fpCallback.is_some()
     }
 
+    /// kObdEvWrStringDomain before a string or domain of `download` bytes
+    /// is written to `storage`: the callback sees the download size, the
+    /// object size and the data pointer, and may change the latter two. For
+    /// an application variable (`tObdVarEntry`) the changes are taken over;
+    /// buffers owned by the dictionary (RAM strings) cannot move, so a
+    /// change there is ignored. `Err` as in [`ObdEntry::notify`].
+    pub fn string_domain_event(
+        &self,
+        sub: u8,
+        storage: Storage,
+        download: usize,
+    ) -> Result<(), (u32, u32)> {
+        if self.m_fpCallback.is_none() {
+            return Ok(());
+        }
+        let (size, ptr) = match storage {
+            Storage::Var(v) => (
+                v.data().map_or(0, <[AtomicU8]>::len),
+                v.m_pData.load(Ordering::Relaxed),
+            ),
+            Storage::RamString(b) => (b.len().saturating_sub(1), b.as_ptr() as *mut c_void),
+            _ => return Ok(()),
+        };
+        let mut p = ObdVStringDomain {
+            m_DownloadSize: ObdSize::try_from(download).unwrap_or(ObdSize::MAX),
+            m_ObjSize: ObdSize::try_from(size).unwrap_or(ObdSize::MAX),
+            m_pData: ptr,
+        };
+        self.notify(
+            crate::od::event::WR_STRING_DOMAIN,
+            sub,
+            CbArg::StringDomain(&mut p),
+        )?;
+        if let Storage::Var(v) = storage {
+            if p.m_pData != ptr || super::types::obd_size_len(p.m_ObjSize) != size {
+                v.m_pData.store(p.m_pData, Ordering::Relaxed);
+                v.m_Size.store(p.m_ObjSize, Ordering::Relaxed);
+            }
+        }
+        Ok(())
+    }
+
     /// Calls the entry's callback (if any) with `event`. `Err` carries the
     /// abort code the callback set (0x08000020 when it refused without one)
     /// and the `tCopKernel` it returned.
@@ -475,6 +533,7 @@ impl ObdEntry {
             CbArg::None => core::ptr::null_mut(),
             CbArg::Data(d) => d.as_mut_ptr() as *mut c_void,
             CbArg::Size(s) => s as *mut ObdSize as *mut c_void,
+            CbArg::StringDomain(d) => d as *mut ObdVStringDomain as *mut c_void,
         };
         let mut param = ObdCbParam {
             m_ObdEvent: event,

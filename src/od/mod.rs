@@ -417,6 +417,16 @@ impl ObjectDictionary {
         Ok(n)
     }
 
+    /// Tells the entry's callback that an SDO transfer of this object was
+    /// aborted (kObdEvAbortSdo); `m_pArg` points to the abort code (DWORD,
+    /// CPU byte order). Unknown objects are ignored.
+    pub fn notify_sdo_abort(&self, index: u16, sub: u8, code: u32) {
+        if let Some(entry) = self.find_entry(index) {
+            let mut c = code.to_ne_bytes();
+            let _ = entry.notify(event::ABORT_SDO, sub, CbArg::Data(&mut c));
+        }
+    }
+
     /// Finds an object and asks its callback whether it exists.
     pub fn locate(&self, index: u16, sub: u8) -> Result<Object, OdError> {
         let obj = self.find(index, sub)?;
@@ -511,6 +521,16 @@ impl ObjectDictionary {
         hooks: &mut impl WriteHooks,
     ) -> Result<(), OdError> {
         let obj = self.begin_write(index, sub, None)?;
+        if obj.typ.wire_size().is_none() {
+            // Strings and domains: the callback may resize or move the
+            // application's buffer before the length is checked.
+            obj.entry
+                .string_domain_event(obj.sub, obj.storage()?, data.len())
+                .map_err(|(abort, ret)| OdError {
+                    kernel: kernel_from_callback(ret),
+                    abort,
+                })?;
+        }
         let staged = self.stage(&obj, order, data)?;
         hooks.check(self, &obj, &staged)?;
         self.pre_write_callback(&obj, &staged, data)?;
@@ -775,6 +795,3 @@ fn validate_part(part: &[ObdEntry]) -> Result<(), TableError> {
     }
     Ok(())
 }
-
-#[cfg(test)]
-mod tests;

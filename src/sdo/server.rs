@@ -218,24 +218,35 @@ impl SdoServer {
         }
         let tx = self.tx?;
         let reply = match ClientFrame::from_can(frame) {
-            Ok(req) => self.handle(od, hooks, req, now),
+            Ok(req) => {
+                if let (ClientFrame::Abort { code, .. }, Some(mux)) = (req, self.transfer.mux()) {
+                    // The client aborts the running transfer.
+                    od.notify_sdo_abort(mux.index, mux.sub, code);
+                }
+                self.handle(od, hooks, req, now)
+            }
             Err(DecodeError::Length) => None,
             Err(DecodeError::UnsupportedCommand { mux, .. }) => {
                 let mux = self.transfer.mux().unwrap_or(mux);
                 Some(self.abort(mux, SdoAbort::UnknownCommand.code()))
             }
         };
+        if let Some(ServerFrame::Abort { mux, code }) = reply {
+            od.notify_sdo_abort(mux.index, mux.sub, code);
+        }
         reply.map(|r| r.to_can(tx))
     }
 
     /// Timeout supervision; returns the abort frame (0x05040000) when the
-    /// running transfer timed out.
-    pub fn poll(&mut self, now: Ticks) -> Option<CanFrame> {
+    /// running transfer timed out (the object's callback sees
+    /// kObdEvAbortSdo).
+    pub fn poll(&mut self, od: &ObjectDictionary, now: Ticks) -> Option<CanFrame> {
         if !self.expired(now) {
             return None;
         }
         let mux = self.transfer.mux()?;
         let tx = self.tx?;
+        od.notify_sdo_abort(mux.index, mux.sub, SdoAbort::Timeout.code());
         Some(self.abort(mux, SdoAbort::Timeout.code()).to_can(tx))
     }
 

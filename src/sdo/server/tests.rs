@@ -660,17 +660,28 @@ fn timeout_aborts_after_the_configured_ticks() {
     rig.set(0x2004, 0, b"0123456789");
     rig.req([0x40, 0x04, 0x20, 0x00, 0, 0, 0, 0]).unwrap();
     let start = rig.now;
-    assert_eq!(rig.server.poll(start.plus(SDOS_DEFAULT_TIMEOUT - 1)), None);
+    assert_eq!(
+        rig.server
+            .poll(&rig.od, start.plus(SDOS_DEFAULT_TIMEOUT - 1)),
+        None
+    );
     // A valid segment restarts the supervision.
     rig.now = start.plus(SDOS_DEFAULT_TIMEOUT - 1);
     rig.req([0x60, 0, 0, 0, 0, 0, 0, 0]).unwrap();
-    assert_eq!(rig.server.poll(start.plus(SDOS_DEFAULT_TIMEOUT)), None);
-    let f = rig.server.poll(rig.now.plus(SDOS_DEFAULT_TIMEOUT)).unwrap();
+    assert_eq!(
+        rig.server.poll(&rig.od, start.plus(SDOS_DEFAULT_TIMEOUT)),
+        None
+    );
+    let f = rig
+        .server
+        .poll(&rig.od, rig.now.plus(SDOS_DEFAULT_TIMEOUT))
+        .unwrap();
     assert_eq!(f.id, CanId::std_masked(RESP));
     assert_eq!(f.data, abort_bytes(0x2004, 0, SdoAbort::Timeout));
     assert!(!rig.server.is_busy());
     assert_eq!(
-        rig.server.poll(rig.now.plus(2 * SDOS_DEFAULT_TIMEOUT)),
+        rig.server
+            .poll(&rig.od, rig.now.plus(2 * SDOS_DEFAULT_TIMEOUT)),
         None
     );
 }
@@ -699,15 +710,15 @@ fn timeout_zero_disables_supervision_and_ticks_wrap() {
     let mut rig = Rig::new(test_od!());
     rig.server.set_timeout_ticks(0);
     rig.req([0x21, 0x04, 0x20, 0x00, 14, 0, 0, 0]).unwrap();
-    assert_eq!(rig.server.poll(rig.now.plus(u32::MAX / 2)), None);
+    assert_eq!(rig.server.poll(&rig.od, rig.now.plus(u32::MAX / 2)), None);
     assert!(rig.server.is_busy());
     // Supervision across the 32-bit tick wrap.
     rig.server.set_timeout_ticks(50);
     rig.server.cancel();
     rig.now = Ticks(u32::MAX - 10);
     rig.req([0x21, 0x04, 0x20, 0x00, 14, 0, 0, 0]).unwrap();
-    assert_eq!(rig.server.poll(Ticks(38)), None);
-    assert!(rig.server.poll(Ticks(39)).is_some());
+    assert_eq!(rig.server.poll(&rig.od, Ticks(38)), None);
+    assert!(rig.server.poll(&rig.od, Ticks(39)).is_some());
 }
 
 #[test]
@@ -717,7 +728,8 @@ fn cancel_drops_the_transfer_without_answer() {
     rig.server.cancel();
     assert!(!rig.server.is_busy());
     assert_eq!(
-        rig.server.poll(rig.now.plus(10 * SDOS_DEFAULT_TIMEOUT)),
+        rig.server
+            .poll(&rig.od, rig.now.plus(10 * SDOS_DEFAULT_TIMEOUT)),
         None
     );
 }
@@ -790,5 +802,5 @@ fn changed_cob_ids_drop_the_transfer() {
     s.reconfigure(&od, 2);
     assert_eq!(s.rx_id(), None);
     assert_eq!(s.on_frame(&od, &mut NoHooks, &init, Ticks(0)), None);
-    assert_eq!(s.poll(Ticks(u32::MAX / 4)), None);
+    assert_eq!(s.poll(&od, Ticks(u32::MAX / 4)), None);
 }
