@@ -32,7 +32,8 @@ build() { # $1 = extra rustflags, $2 = cargo target dir suffix
         RUSTFLAGS="-C target-cpu=cortex-r4f $1" \
         cargo rustc -q --release --lib --crate-type staticlib -Zbuild-std=core --target $T \
         2> >(grep -v -e 'unstable feature specified for `-Ctarget-feature`: `thumb-mode`' \
-            -e 'this feature is not stably supported' -e '^ *|$' -e '^ *= note: this feature' >&2)
+            -e 'this feature is not stably supported' -e '^ *|$' -e '^ *= note: this feature' >&2) ||
+        return 1 # (errexit does not reach into the command substitution)
     echo "${CARGO_TARGET_DIR:-target}/tms570-$2/$T/release/libcop.a"
 }
 ARM_LIB=$(build "$FLAGS" "$VARIANT")
