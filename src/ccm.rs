@@ -97,7 +97,7 @@ enum Phase {
 }
 
 /// A CANopen device.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct Stack {
     od: ObjectDictionary,
     node_id: u8,

@@ -88,6 +88,19 @@ fn srdo_cob_ids_changed_in_preoperational_are_received() {
             &bus,
         );
     }
+    #[cfg(feature = "srdo-static-mapping")]
+    {
+        // Static mapping: the variable fields are defined before 0xA5.
+        let od = *s.od();
+        s.srdo_mut()
+            .static_define_var_fields(
+                &od,
+                0x1301,
+                &support::consumer::NORMAL,
+                &support::consumer::INVERTED,
+            )
+            .unwrap();
+    }
     write(&mut s, 0x13FE, 0, 0xA5, 1, &bus);
     assert!(!port.ids.contains(&0x111));
     s.exec_command(NmtCommand::StartRemoteNode).unwrap();
