@@ -346,11 +346,106 @@ tCopKernel TestLastSrdoError_g;
 tCopKernel aTestSrdoErrors_g[TEST_MAX_SRDO_ERRORS];
 unsigned   uTestGfcEvents_g;
 unsigned   uTestProgMonEvents_g;
+BYTE       bTestLastSrdoNode_g = 0xFF;
+BYTE       bTestLastGfcNode_g = 0xFF;
+void (*pfnTestSrdoEventHook_g) (WORD wSrdoCommuIndex_p);
+void (*pfnTestSrdoErrorHook_g) (WORD wSrdoCommuIndex_p, tCopKernel ErrorCode_p);
+
+void TestSrdoClear (void)
+{
+    uTestSrdoEvents_g = 0;
+    uTestSrdoErrors_g = 0;
+    wTestLastSrdoIndex_g = 0;
+    TestLastSrdoError_g = kCopSuccessful;
+    memset(aTestSrdoErrors_g, 0, sizeof(aTestSrdoErrors_g));
+    uTestGfcEvents_g = 0;
+    uTestProgMonEvents_g = 0;
+    bTestLastSrdoNode_g = 0xFF;
+    bTestLastGfcNode_g = 0xFF;
+    pfnTestSrdoEventHook_g = NULL;
+    pfnTestSrdoErrorHook_g = NULL;
+}
+
+void TestSrdoEventHandshake (WORD wSrdoCommuIndex_p)
+{
+    BYTE bState = 0;
+
+    if (CcmGetSrdoState(&bState, wSrdoCommuIndex_p) == kCopSuccessful)
+    {
+        (void) CcmSetSrdoState((BYTE) (bState | 0x30), wSrdoCommuIndex_p);
+    }
+}
+
+void TestSrdoErrorHandshake (WORD wSrdoCommuIndex_p, tCopKernel ErrorCode_p)
+{
+    BYTE bState = 0;
+
+    if ((ErrorCode_p != kCopSrdoNotHandledInApp) &&
+        (CcmGetSrdoState(&bState, wSrdoCommuIndex_p) == kCopSuccessful) && ((bState & 0x30) == 0x10))
+    {
+        bState |= 0x30;
+        bState ^= 0xC0;
+        (void) CcmSetSrdoState(bState, wSrdoCommuIndex_p);
+    }
+}
+
+tCopKernel TestSrdoMakeValid (void)
+{
+    BYTE bValid = 0xA5;
+    WORD wIndex;
+    WORD wCrc;
+    tCopKernel Ret;
+
+    for (wIndex = 0x1301; wIndex <= 0x1340; wIndex++)
+    {
+        if (CcmCalcSrdoCrc(wIndex, &wCrc) != kCopSuccessful)
+        {
+            continue;
+        }
+        Ret = CcmWriteObject(0x13FF, (BYTE) (wIndex - 0x1300), &wCrc, sizeof(wCrc));
+        if (Ret != kCopSuccessful)
+        {
+            return Ret;
+        }
+    }
+    return CcmWriteObject(0x13FE, 0, &bValid, sizeof(bValid));
+}
+
+tCopKernel TestWriteU8 (WORD wIndex_p, BYTE bSub_p, BYTE bValue_p)
+{
+    return CcmWriteObject(wIndex_p, bSub_p, &bValue_p, sizeof(bValue_p));
+}
+
+tCopKernel TestWriteU16 (WORD wIndex_p, BYTE bSub_p, WORD wValue_p)
+{
+    return CcmWriteObject(wIndex_p, bSub_p, &wValue_p, sizeof(wValue_p));
+}
+
+tCopKernel TestWriteU32 (WORD wIndex_p, BYTE bSub_p, DWORD dwValue_p)
+{
+    return CcmWriteObject(wIndex_p, bSub_p, &dwValue_p, sizeof(dwValue_p));
+}
+
+BYTE TestReadU8 (WORD wIndex_p, BYTE bSub_p)
+{
+    BYTE bValue = 0;
+    tObdSize Size = sizeof(bValue);
+
+    (void) CcmReadObject(wIndex_p, bSub_p, &bValue, &Size);
+    return bValue;
+}
+
+#if !defined(TEST_OWN_APP_CALLBACKS)   /* a test with its own App* callbacks */
 
 tCopKernel PUBLIC AppSrdoEvent (WORD wSrdoCommuIndex_p)
 {
     uTestSrdoEvents_g++;
     wTestLastSrdoIndex_g = wSrdoCommuIndex_p;
+    bTestLastSrdoNode_g = SimSelectedNode();
+    if (pfnTestSrdoEventHook_g != NULL)
+    {
+        pfnTestSrdoEventHook_g(wSrdoCommuIndex_p);
+    }
     return kCopSuccessful;
 }
 
@@ -363,6 +458,11 @@ tCopKernel PUBLIC AppSrdoError (WORD wSrdoCommuIndex_p, tCopKernel ErrorCode_p)
     uTestSrdoErrors_g++;
     wTestLastSrdoIndex_g = wSrdoCommuIndex_p;
     TestLastSrdoError_g = ErrorCode_p;
+    bTestLastSrdoNode_g = SimSelectedNode();
+    if (pfnTestSrdoErrorHook_g != NULL)
+    {
+        pfnTestSrdoErrorHook_g(wSrdoCommuIndex_p, ErrorCode_p);
+    }
     return kCopSuccessful;
 }
 
@@ -370,6 +470,7 @@ tCopKernel PUBLIC AppSrdoError (WORD wSrdoCommuIndex_p, tCopKernel ErrorCode_p)
 tCopKernel PUBLIC AppGfcEvent (void)
 {
     uTestGfcEvents_g++;
+    bTestLastGfcNode_g = SimSelectedNode();
     return kCopSuccessful;
 }
 #endif
@@ -382,6 +483,8 @@ tCopKernel PUBLIC AppProgMonEvent (tProgMonEvent Event_p)
     return kCopSuccessful;
 }
 #endif
+
+#endif /* !TEST_OWN_APP_CALLBACKS */
 
 /* ---- application variables of objdict_all.h ------------------------------------------- */
 

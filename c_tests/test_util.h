@@ -75,6 +75,27 @@ extern tCopKernel TestLastSrdoError_g;
 extern tCopKernel aTestSrdoErrors_g[TEST_MAX_SRDO_ERRORS];   /* in the order reported */
 extern unsigned uTestGfcEvents_g;
 extern unsigned uTestProgMonEvents_g;
+/* SimSelectedNode() during the last SRDO / GFC callback (two-node tests). */
+extern BYTE bTestLastSrdoNode_g;
+extern BYTE bTestLastGfcNode_g;
+/* Optional hooks the SRDO callbacks call after recording (NULL: none), so a
+ * test can act like an application (status handshake, nested calls). */
+extern void (*pfnTestSrdoEventHook_g) (WORD wSrdoCommuIndex_p);
+extern void (*pfnTestSrdoErrorHook_g) (WORD wSrdoCommuIndex_p, tCopKernel ErrorCode_p);
+/* The handshake of manual 2.9.1 / 2.9.2 as hooks. */
+void TestSrdoEventHandshake (WORD wSrdoCommuIndex_p);
+void TestSrdoErrorHandshake (WORD wSrdoCommuIndex_p, tCopKernel ErrorCode_p);
+/* Clears the SRDO/GFC counters and hooks. */
+void TestSrdoClear (void);
+/* Declares the current SRDO parameters of the selected node valid: the CRC
+ * of every SRDO (CcmCalcSrdoCrc) into 0x13FF, then 0xA5 into 0x13FE.
+ * Returns the code of the 0x13FE write (or the first failure). */
+tCopKernel TestSrdoMakeValid (void);
+/* One-byte and small writes/reads through CcmWriteObject / CcmReadObject. */
+tCopKernel TestWriteU8 (WORD wIndex_p, BYTE bSub_p, BYTE bValue_p);
+tCopKernel TestWriteU16 (WORD wIndex_p, BYTE bSub_p, WORD wValue_p);
+tCopKernel TestWriteU32 (WORD wIndex_p, BYTE bSub_p, DWORD dwValue_p);
+BYTE       TestReadU8 (WORD wIndex_p, BYTE bSub_p);
 
 /* Application variables named by objdict_all.h (EXTVAR, EXTARRAY). */
 extern tObdUnsigned32 dwTestExtVar_g;

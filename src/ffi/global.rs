@@ -63,6 +63,7 @@ struct Global {
     instances: UnsafeCell<[Option<Instance>; MAX_INSTANCES]>,
     current: Cell<usize>,
     busy: Cell<bool>,
+    pumping: Cell<bool>,
 }
 
 // SAFETY: the C API is documented as single-threaded (one thread calls the
@@ -74,6 +75,7 @@ static GLOBAL: Global = Global {
     instances: UnsafeCell::new([const { None }; MAX_INSTANCES]),
     current: Cell::new(0),
     busy: Cell::new(false),
+    pumping: Cell::new(false),
 };
 
 /// Borrows the current instance slot; `busy` must be held.
@@ -228,7 +230,23 @@ pub fn report_error(code: CopKernel) {
 /// the next event; the callback runs outside. Returns `true` when an SRDO
 /// error was reported as not handled by the application
 /// (kCopSrdoNotHandledInApp).
+///
+/// Callbacks never nest: a `Ccm*` call made from inside a callback leaves
+/// the events it queues (and those still queued) to the pump that is
+/// already running, which hands them out after the callback has returned.
+/// Otherwise, for example, the SRDO handshake would be checked before
+/// `AppSrdoError` has finished, and kNmtEvPostResetCommunication would
+/// arrive inside the application's kNmtEvResetCommunication handler.
 pub fn pump(mut next: impl FnMut(&mut Instance, crate::port::Ticks) -> Option<Event>) -> bool {
+    if GLOBAL.pumping.replace(true) {
+        return false;
+    }
+    let not_handled = pump_events(&mut next);
+    GLOBAL.pumping.set(false);
+    not_handled
+}
+
+fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Option<Event>) -> bool {
     let mut not_handled = false;
     loop {
         let now = TgtClock.now();
