@@ -321,7 +321,12 @@ static void MasterApi (void)
     CHECK_RET(CcmSdocGetState(0x1280, &State, &dwAbort), kCopSuccessful);
     CHECK_EQ(State, kSdocTransferFinished);
     CHECK_EQ(dwAbort, 0);
-    CHECK_EQ(dwData, 0x00020191UL);
+    /* the SDO client moves the data bytes as they travel (CANopen byte
+     * order, little-endian); the application converts them */
+    CHECK_EQ(((BYTE*) &dwData)[0], 0x91);
+    CHECK_EQ(((BYTE*) &dwData)[1], 0x01);
+    CHECK_EQ(((BYTE*) &dwData)[2], 0x02);
+    CHECK_EQ(((BYTE*) &dwData)[3], 0x00);
     CHECK_RET(SdocGetTransmittedBytes(0x1280, NULL), kCopInvalidParam);
     CHECK_RET(SdocGetTransmittedBytes(0x1280, &dwBytes), kCopSuccessful);
     CHECK_EQ(dwBytes, 4);
