@@ -1,0 +1,6 @@
+/*
+ * objdict_sensor.c - the sensor's dictionary as tables (ObdInitRamSensor).
+ */
+#define OBD_INIT_RAM_NAME ObdInitRamSensor
+#define OBD_OBJDICT_FILE  "objdict_sensor.h"
+#include "objdef.h"
