@@ -86,6 +86,17 @@ class Transfers(PeerTestCase):
                 self.assertEqual(var.raw, text)
                 self.assertEqual(self.peer.read(0x2001, 0), text.encode("ascii"))
 
+    def test_segmented_download_without_size(self):
+        """python-canopen's stream API writes without stating the size
+        (initiate with s = 0); the last segment ends the value."""
+        text = "stream " * 30
+        self.peer.trace.clear()
+        with self.node.sdo.open(0x2001, 0, "wt", encoding="ascii") as f:
+            f.write(text)
+        initiate = [bytes(m.data) for who, m in self.peer.trace if who == "python" and m.arbitration_id == 0x605][0]
+        self.assertEqual(initiate[0], 0x20)
+        self.assertEqual(self.node.sdo[0x2001].raw, text)
+
     def test_string_longer_than_capacity_is_refused(self):
         """257 characters: the size stated at initiate exceeds the object
         (abort 0x06070012, data type length too high); the value is kept."""
