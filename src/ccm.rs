@@ -107,6 +107,8 @@ pub struct Stack {
     phase: Phase,
     guard_toggle: bool,
     sdo_subscribed: Option<CanId>,
+    /// Identifiers changed outside a cycle; subscribe at the next one.
+    resubscribe: bool,
     hb: HeartbeatProducer,
     hbc: HeartbeatConsumer,
     nmtm: NmtMaster,
@@ -161,7 +163,8 @@ impl WriteHooks for Hooks<'_> {
             crate::emcy::COB_ID_INDEX | crate::emcy::INHIBIT_INDEX => {
                 self.emcy.reconfigure(od, self.node)
             }
-            0x1200..=0x127F => self.sdo_changed = true,
+            // SDO server 0x1200..0x127F, SDO client 0x1280..0x12FF.
+            0x1200..=0x12FF => self.sdo_changed = true,
             0x1300..=0x13FF => self.srdo.after_store(od, obj),
             i if crate::pdo::handles(i) => self.pdo.after_store(od, obj, self.now),
             _ => {}
@@ -188,6 +191,7 @@ impl Stack {
             phase: Phase::Idle,
             guard_toggle: false,
             sdo_subscribed: None,
+            resubscribe: false,
             hb: HeartbeatProducer::new(),
             hbc: HeartbeatConsumer::new(),
             nmtm: NmtMaster::new(),
@@ -383,6 +387,9 @@ impl Stack {
             }
             match self.phase {
                 Phase::Overrun => {
+                    if core::mem::take(&mut self.resubscribe) {
+                        self.subscribe(port);
+                    }
                     if port.take_rx_overrun() && self.connected {
                         self.srdo.on_rx_overrun();
                     }
@@ -767,6 +774,10 @@ impl Stack {
         let r = self.od.write(index, sub, order, data, &mut hooks);
         if hooks.sdo_changed {
             self.sdo.reconfigure(&self.od, self.node_id);
+            self.sdoc.reconfigure(&self.od);
+            // No port here: the driver learns the new identifiers at the
+            // start of the next cycle.
+            self.resubscribe = true;
         }
         r
     }

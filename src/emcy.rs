@@ -46,7 +46,11 @@ impl EmcyProducer {
             .map(|v| v as u32)
             .unwrap_or(0x80 + u32::from(node));
         let cob = if cob == 0x80 {
-            cob + u32::from(node)
+            // The object holds the predefined base: it must show the COB-ID
+            // in use (CiA 301), so the node-ID goes into the object too.
+            let used = cob + u32::from(node);
+            let _ = od.poke_uint(COB_ID_INDEX, 0, u64::from(used));
+            used
         } else {
             cob
         };

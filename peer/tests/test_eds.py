@@ -120,17 +120,11 @@ class EdsMatchesLibrary(PeerTestCase):
                 else:
                     self.assertEqual(local, value)
 
-    @unittest.expectedFailure
     def test_node_id_based_cob_ids(self):
-        """Known deviation from CiA 301: objdict.h declares 0x1200 and 0x1014
-        with the base COB-ID (0x600, 0x580, 0x80) because the node-ID is only
-        known at run time. The library adds the node-ID when it uses them,
-        but the objects keep the base, so a master reads 0x600 from 0x1200
-        sub 1 instead of 0x605 (CiA 301 7.5.2.33: the COB-ID in use; the EDS
-        says $NODEID+0x600):
-            605 [8] 40 00 12 01 00 00 00 00
-            585 [8] 43 00 12 01 00 06 00 00   (expected 43 00 12 01 05 06 00 00)
-        """
+        """objdict.h declares 0x1200 and 0x1014 with the base COB-ID (0x600,
+        0x580, 0x80) because the node-ID is only known at run time; the
+        objects must show the COB-ID in use (CiA 301 7.5.2.33; the EDS says
+        $NODEID+0x600), so a master reads base + node-ID."""
         eds = eds_variables(self.node.object_dictionary)
         for index, sub in sorted(NODE_ID_COB_IDS):
             with self.subTest(object=f"0x{index:04X}/{sub}"):

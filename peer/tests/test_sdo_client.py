@@ -132,11 +132,9 @@ class SdoClient(PeerTestCase):
         self.assertEqual(self.transfer(0x2100, 0, True, length=4), (FINISHED, 0))
         self.assertEqual(self.peer.sdoc_data(4), struct.pack("<I", 0x0A0B0C0D))
 
-    @unittest.expectedFailure
     def test_define_client_tab_shows_in_0x1280(self):
-        """Known bug: CcmSdocDefineClientTab configures the channel but not
-        object 0x1280, so a master reading the object sees the channel as
-        invalid (0x80000000) while the node uses 0x622/0x5A2."""
+        """CcmSdocDefineClientTab configures the channel and object 0x1280,
+        so a master reading the object sees the parameters in use."""
         self.assertEqual(self.node.sdo[CLIENT][1].raw, 0x600 + SERVER_ID)
         self.assertEqual(self.node.sdo[CLIENT][2].raw, 0x580 + SERVER_ID)
         self.assertEqual(self.node.sdo[CLIENT][3].raw, SERVER_ID)

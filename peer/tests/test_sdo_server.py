@@ -123,6 +123,10 @@ class Transfers(PeerTestCase):
         # a file-like segmented read (python-canopen's stream API) agrees
         with self.node.sdo.open(0x2002, 0, "rb") as f:
             self.assertEqual(f.read()[:299], data[:299])
+        # a shorter download: the domain keeps its size and the rest is
+        # zero, so no old data remain behind the new value
+        self.node.sdo.download(0x2002, 0, b"short")
+        self.assertEqual(self.node.sdo.upload(0x2002, 0), b"short" + bytes(295))
 
     def test_user_defined_variable(self):
         """0x2003 (USERDEF) reads and writes the application's variable."""

@@ -308,6 +308,15 @@ pub unsafe extern "C" fn CcmSdocDefineClientTab(
             }
             let Instance { stack, port, .. } = i;
             stack.define_sdo_client(port, p.m_wClientIndex, cp)?;
+            // Where the dictionary has the client object, it shows the
+            // channel as defined (CiA 301: 0x1280+n holds the parameters in
+            // use).
+            let od = stack.od();
+            if od.find_entry(p.m_wClientIndex).is_some() {
+                let _ = od.poke_uint(p.m_wClientIndex, 1, u64::from(cp.tx_cob));
+                let _ = od.poke_uint(p.m_wClientIndex, 2, u64::from(cp.rx_cob));
+                let _ = od.poke_uint(p.m_wClientIndex, 3, u64::from(cp.server_node));
+            }
         }
         Ok(())
     }))

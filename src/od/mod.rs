@@ -615,7 +615,14 @@ impl ObjectDictionary {
                 if staged.fixed {
                     value::store(m, staged.native());
                 } else {
-                    value::store(m.get(..data.len()).unwrap_or(m), data);
+                    // A domain keeps its size (m_Size; the kObdEvWrStringDomain
+                    // callback may change it): a shorter value is followed
+                    // by zeros, as in RAM byte arrays, so no old data remain.
+                    let n = data.len().min(m.len());
+                    value::store(m.get(..n).unwrap_or(&[]), data);
+                    for b in m.get(n..).unwrap_or(&[]) {
+                        b.store(0, core::sync::atomic::Ordering::Relaxed);
+                    }
                 }
             }
             Storage::Rom(_) | Storage::RomString(_) => return Err(OdError::WRITE),

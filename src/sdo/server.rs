@@ -500,6 +500,11 @@ fn cob_id(od: &ObjectDictionary, sub: u8, base: u16, node: u8) -> Option<CanId> 
         return None;
     }
     if v == u32::from(base) {
+        // The object holds the predefined base: it must show the COB-ID in
+        // use (CiA 301), so the node-ID goes into the object too.
+        if let Some(id) = default {
+            let _ = od.poke_uint(SERVER_PARAMETER_INDEX, sub, u64::from(id.raw()));
+        }
         return default;
     }
     if v & COB_ID_EXTENDED != 0 {

@@ -787,9 +787,10 @@ fn changed_cob_ids_drop_the_transfer() {
         CanId::std_masked(0x602),
         &[0x40, 0x00, 0x12, 0x01, 0, 0, 0, 0],
     );
-    // 0x1200.1 itself is 4 bytes: expedited.
+    // 0x1200.1 itself is 4 bytes: expedited. It shows the COB-ID in use
+    // (CiA 301), i.e. the base 0x600 plus node-ID 2.
     let r = s.on_frame(&od, &mut NoHooks, &init, Ticks(0)).unwrap();
-    assert_eq!(r.data, [0x43, 0x00, 0x12, 0x01, 0x00, 0x06, 0x00, 0x00]);
+    assert_eq!(r.data, [0x43, 0x00, 0x12, 0x01, 0x02, 0x06, 0x00, 0x00]);
     // Write 0x1200.1 = 0x8000_0602 through SDO: the server goes quiet.
     let w = CanFrame::new(
         CanId::std_masked(0x602),
