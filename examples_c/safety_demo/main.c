@@ -23,10 +23,6 @@
 #include "cdrv_sim.h"
 #include "safety_node.h"
 
-extern tObdUnsigned8  bSensorEStop_g;
-extern tObdUnsigned8  bActEStop_g;
-extern tObdUnsigned16 wActSpeedLimit_g;
-
 tCopKernel PUBLIC ObdInitRamSensor (void MEM* pInitParam_p);
 tCopKernel PUBLIC ObdInitRamActuator (void MEM* pInitParam_p);
 
@@ -130,7 +126,6 @@ int main (void)
     Say(uMs, "end of the script");
     printf("SRDO 0x1301 CRC (0x13FF/1): sensor 0x%04X, actuator 0x%04X\n",
            (unsigned) aSafetyNode_g[0].m_wConfiguredCrc, (unsigned) aSafetyNode_g[1].m_wConfiguredCrc);
-    (void) bSensorEStop_g;
     SimSelectNode(aSafetyNode_g[0].m_bSimNode);
     (void) CcmShutDownCANopen();
     SimSelectNode(aSafetyNode_g[1].m_bSimNode);
@@ -144,7 +139,5 @@ int main (void)
            fOnAfterRecovery_g ? "yes" : "NO",
            (aSafetyNode_g[0].m_fSafetyFault || aSafetyNode_g[1].m_fSafetyFault) ? " - NO, see above" : "");
     printf("safety_demo: %s\n", fOk ? "PASSED" : "FAILED");
-    (void) bActEStop_g;
-    (void) wActSpeedLimit_g;
     return fOk ? 0 : 1;
 }
