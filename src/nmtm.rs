@@ -129,7 +129,9 @@ impl NmtMaster {
         s.next_guard = now;
         s.awaiting = false;
         s.misses = 0;
-        s.toggle = false;
+        // The toggle bit is not reset here: the slave resets it only with
+        // reset communication (CiA 301 7.2.8.3.2.1), which the master sees
+        // as the slave's boot-up message.
         s.no_answer_reported = false;
         Ok(())
     }

@@ -1,0 +1,459 @@
+/*
+ * test_master_api.c - every exported master-side function with success and
+ * refusal codes, with a real partner on the simulated bus:
+ *
+ *   node M (simulated node 0): objdict_master.h, node-ID 1 - NMT master,
+ *          heartbeat consumer, SDO client;
+ *   node S (simulated node 1): objdict_min.h, node-ID 3 - a slave (boot-up,
+ *          node guarding answers, heartbeat producer, SDO server).
+ *
+ * CcmInitNmtm, CcmInitNmtmEx (boot-up and life-guarding events),
+ * CcmDefineSlaveTab, CcmSendNmtCommand, CcmBootNetwork, CcmTriggerNodeGuard,
+ * CcmConfigLgm, CcmNmtmGetSlaveInfo, CcmInitHbc, CcmInitHbcEx (connected,
+ * lost), CcmHbcDefineProducerTab, CcmHbcGetNodeState,
+ * CcmSdocDefineClientTab, CcmSdocStartTransfer (download, upload, the
+ * server's abort, timeout, finish callback), CcmSdocAbort, CcmSdocGetState,
+ * SdocGetTransmittedBytes.
+ */
+#include "test_util.h"
+
+#define SIM_M 0
+#define SIM_S 1
+#define ID_M  1
+#define ID_S  3
+
+tCopKernel PUBLIC ObdInitRamMaster (void MEM* pInitParam_p);
+
+/* ---- callbacks of the master ------------------------------------------------- */
+
+#define MAX_EV 32
+static BYTE             abNmtmNode_g[MAX_EV];
+static tNmtErrCtrlEvent aNmtmEv_g[MAX_EV];
+static unsigned         uNmtm_g;
+static BYTE             abHbcNode_g[MAX_EV];
+static tNmtErrCtrlEvent aHbcEv_g[MAX_EV];
+static unsigned         uHbc_g;
+
+static tCopKernel PUBLIC NmtmCb (BYTE bNodeId_p, tNmtErrCtrlEvent Event_p)
+{
+    if (uNmtm_g < MAX_EV)
+    {
+        abNmtmNode_g[uNmtm_g] = bNodeId_p;
+        aNmtmEv_g[uNmtm_g++] = Event_p;
+    }
+    return kCopSuccessful;
+}
+
+static tCopKernel PUBLIC HbcCb (BYTE bNodeId_p, tNmtErrCtrlEvent Event_p)
+{
+    if (uHbc_g < MAX_EV)
+    {
+        abHbcNode_g[uHbc_g] = bNodeId_p;
+        aHbcEv_g[uHbc_g++] = Event_p;
+    }
+    return kCopSuccessful;
+}
+
+static int SawNmtm (BYTE bNode_p, tNmtErrCtrlEvent Event_p)
+{
+    unsigned i;
+
+    for (i = 0; i < uNmtm_g; i++)
+    {
+        if ((abNmtmNode_g[i] == bNode_p) && (aNmtmEv_g[i] == Event_p))
+        {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static int SawHbc (BYTE bNode_p, tNmtErrCtrlEvent Event_p)
+{
+    unsigned i;
+
+    for (i = 0; i < uHbc_g; i++)
+    {
+        if ((abHbcNode_g[i] == bNode_p) && (aHbcEv_g[i] == Event_p))
+        {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static unsigned           uFinished_g;
+static tSdocCbFinishParam LastFinish_g;
+
+static void PUBLIC SdocFinished (tSdocCbFinishParam MEM* pParam_p)
+{
+    uFinished_g++;
+    LastFinish_g = *pParam_p;
+}
+
+/* ---- helpers -------------------------------------------------------------------- */
+
+/* n ms of bus time, both nodes processing every ms (fSlave_p: S runs). */
+static void Run (unsigned uMs_p, int fSlave_p)
+{
+    unsigned i;
+
+    for (i = 0; i < uMs_p; i++)
+    {
+        if (fSlave_p)
+        {
+            SimSelectNode(SIM_S);
+            (void) CcmProcess();
+        }
+        SimSelectNode(SIM_M);
+        (void) CcmProcess();
+        SimAdvanceMs(1);
+    }
+    SimSelectNode(SIM_M);
+}
+
+static tSdocState SdocState (DWORD* pdwAbort_p)
+{
+    tSdocState State = 0xFF;
+
+    CHECK_RET(CcmSdocGetState(0x1280, &State, pdwAbort_p), kCopSuccessful);
+    return State;
+}
+
+/* ---- the tests -------------------------------------------------------------------- */
+
+static void BeforeInit (void)
+{
+    static CONST BYTE abSlaves[1] = { ID_S };
+    tNmtmSlaveParam Guard = { 10, 2 };
+    tNmtmSlaveInfo Info;
+    tHbcProdParam Producer = { 50, ID_S, 1 };
+    tSdocParam Client;
+    tSdocTransferParam Transfer;
+    tSdocState State;
+    DWORD dwValue = 0;
+    BYTE bState = 0;
+
+    memset(&Client, 0, sizeof(Client));
+    memset(&Transfer, 0, sizeof(Transfer));
+    Transfer.m_pData = &dwValue;
+    Transfer.m_DataLen = 4;
+    SimSelectNode(SIM_M);
+    CHECK_RET(CcmInitNmtm(), kCopIllegalInstance);
+    CHECK_RET(CcmInitNmtmEx(NmtmCb), kCopIllegalInstance);
+    CHECK_RET(CcmDefineSlaveTab(abSlaves, 1), kCopIllegalInstance);
+    CHECK_RET(CcmSendNmtCommand(0, kNmtCommStartRemoteNode), kCopIllegalInstance);
+    CHECK_RET(CcmBootNetwork(), kCopIllegalInstance);
+    CHECK_RET(CcmTriggerNodeGuard(ID_S), kCopIllegalInstance);
+    CHECK_RET(CcmConfigLgm(ID_S, &Guard), kCopIllegalInstance);
+    CHECK_RET(CcmNmtmGetSlaveInfo(ID_S, &Info), kCopIllegalInstance);
+    CHECK_RET(CcmInitHbc(), kCopIllegalInstance);
+    CHECK_RET(CcmInitHbcEx(HbcCb), kCopIllegalInstance);
+    CHECK_RET(CcmHbcDefineProducerTab(&Producer, 1), kCopIllegalInstance);
+    CHECK_RET(CcmHbcGetNodeState(ID_S, &bState), kCopIllegalInstance);
+    CHECK_RET(CcmSdocDefineClientTab(&Client, 1), kCopIllegalInstance);
+    CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopIllegalInstance);
+    CHECK_RET(CcmSdocAbort(0x1280, 0), kCopIllegalInstance);
+    CHECK_RET(CcmSdocGetState(0x1280, &State, &dwValue), kCopIllegalInstance);
+    CHECK_RET(SdocGetTransmittedBytes(0x1280, &dwValue), kCopIllegalInstance);
+}
+
+static void StartUp (void)
+{
+    static CONST BYTE abSlaves[1] = { ID_S };
+    static CONST BYTE abTwice[2] = { ID_S, ID_S };
+    static CONST BYTE abZero[1] = { 0 };
+    static CONST BYTE ab128[1] = { 128 };
+    static CONST BYTE abFive[5] = { 3, 4, 5, 6, 7 };
+    static CONST BYTE abStart3[2] = { 0x01, ID_S };
+    tNmtmSlaveInfo Info;
+
+    CHECK_RET(TestInitNode(SIM_M, ID_M, ObdInitRamMaster, NULL), kCopSuccessful);
+    CHECK_RET(CcmInitNmtm(), kCopSuccessful);
+    CHECK_RET(CcmInitNmtmEx(NmtmCb), kCopSuccessful);
+    CHECK_RET(CcmInitHbc(), kCopSuccessful);
+    CHECK_RET(CcmInitHbcEx(HbcCb), kCopSuccessful);
+    /* not connected yet: no NMT command leaves the node */
+    CHECK_RET(CcmSendNmtCommand(ID_S, kNmtCommStartRemoteNode), kCopNmtStateError);
+    CHECK_RET(CcmConnectToNet(), kCopSuccessful);
+
+    /* the slave table */
+    CHECK_RET(CcmDefineSlaveTab(NULL, 1), kCopInvalidParam);
+    CHECK_RET(CcmDefineSlaveTab(abTwice, 2), kCopNmtmSlaveNodeExist);
+    CHECK_RET(CcmDefineSlaveTab(abZero, 1), kCopNmtmInvalidSlaveNodeId);
+    CHECK_RET(CcmDefineSlaveTab(ab128, 1), kCopNmtmInvalidSlaveNodeId);
+    CHECK_RET(CcmDefineSlaveTab(abFive, 5), kCopNmtmNoFreeSlaveEntry);      /* NMTM_MAX_SLAVE_ENTRIES 4 */
+    CHECK_RET(CcmDefineSlaveTab(abSlaves, 1), kCopSuccessful);
+
+    /* the slave boots: the master's callback hears it */
+    CHECK_RET(TestInitNode(SIM_S, ID_S, ObdInitRamMin, NULL), kCopSuccessful);
+    CHECK_RET(CcmConnectToNet(), kCopSuccessful);
+    Run(1, 1);
+    CHECK(SawNmtm(ID_S, kNmtErrCtrlEvBootupReceived));
+    CHECK_RET(CcmNmtmGetSlaveInfo(ID_S, &Info), kCopSuccessful);
+    CHECK_EQ(Info.m_bNodeState, 0);                     /* boot-up */
+    TestDrainSent();
+
+    /* NMT commands */
+    CHECK_RET(CcmSendNmtCommand(ID_S, kNmtCommStartRemoteNode), kCopSuccessful);
+    TestExpectFrame("NMT start node 3", 0x000, 2, abStart3);
+    CHECK_RET(CcmSendNmtCommand(ID_S, 0x0077), kCopNmtUnknownCommand);
+    CHECK_RET(CcmSendNmtCommand(128, kNmtCommStartRemoteNode), kCopNmtmInvalidSlaveNodeId);
+    Run(1, 1);
+    SimSelectNode(SIM_S);
+    CHECK_EQ(CcmObdGetNodeState(), kNodeStateOperational);
+    SimSelectNode(SIM_M);
+    CHECK_EQ(CcmObdGetNodeState(), kNodeStatePreOperational);   /* addressed node 3 only */
+    CHECK_RET(CcmSendNmtCommand(0, kNmtCommEnterPreOperational), kCopSuccessful);
+    Run(1, 1);
+    SimSelectNode(SIM_S);
+    CHECK_EQ(CcmObdGetNodeState(), kNodeStatePreOperational);
+    SimSelectNode(SIM_M);
+    CHECK_RET(CcmBootNetwork(), kCopSuccessful);        /* start all: also this node */
+    Run(1, 1);
+    CHECK_EQ(CcmObdGetNodeState(), kNodeStateOperational);
+    SimSelectNode(SIM_S);
+    CHECK_EQ(CcmObdGetNodeState(), kNodeStateOperational);
+    SimSelectNode(SIM_M);
+    TestDrainSent();
+}
+
+static void Guarding (void)
+{
+    static CONST BYTE abAnswer[1] = { 0x05 };
+    tNmtmSlaveParam Guard;
+    tNmtmSlaveInfo Info;
+    tSimFrame Frame;
+
+    /* one guard request, the slave answers "operational" (toggle 0) */
+    CHECK_RET(CcmTriggerNodeGuard(ID_S), kCopSuccessful);
+    CHECK(SimTakeSentFrame(&Frame));
+    CHECK_EQ(Frame.m_dwId, 0x700 + ID_S);
+    CHECK_EQ(Frame.m_bRtr, 1);
+    CHECK_RET(CcmTriggerNodeGuard(9), kCopNmtmSlaveEntryNotExist);
+    CHECK_RET(CcmTriggerNodeGuard(200), kCopNmtmInvalidSlaveNodeId);
+    Run(1, 1);
+    TestExpectFrame("guard answer", 0x700 + ID_S, 1, abAnswer);
+    memset(&Info, 0xEE, sizeof(Info));
+    CHECK_RET(CcmNmtmGetSlaveInfo(ID_S, &Info), kCopSuccessful);
+    CHECK_EQ(Info.m_bNodeState, kNodeStateOperational);
+    CHECK_EQ(Info.m_bMissedAnswers, 0);
+    CHECK_RET(CcmNmtmGetSlaveInfo(ID_S, NULL), kCopInvalidParam);
+    CHECK_RET(CcmNmtmGetSlaveInfo(9, &Info), kCopNmtmSlaveEntryNotExist);
+    CHECK_RET(CcmNmtmGetSlaveInfo(0, &Info), kCopNmtmInvalidSlaveNodeId);
+
+    /* life guarding: 10 ms, factor 2; answered while the slave runs */
+    Guard.m_wLifeguardTime = 10;
+    Guard.m_bLifeguardFactor = 2;
+    CHECK_RET(CcmConfigLgm(ID_S, NULL), kCopInvalidParam);
+    CHECK_RET(CcmConfigLgm(9, &Guard), kCopNmtmSlaveEntryNotExist);
+    CHECK_RET(CcmConfigLgm(ID_S, &Guard), kCopSuccessful);
+    CHECK_RET(CcmNmtmGetSlaveInfo(ID_S, &Info), kCopSuccessful);
+    CHECK_EQ(Info.m_wLifeguardTime, 10);
+    CHECK_EQ(Info.m_bLifeguardFactor, 2);
+    Run(50, 1);
+    CHECK(!SawNmtm(ID_S, kNmtErrCtrlEvLgNoAnswer));
+    CHECK(!SawNmtm(ID_S, kNmtErrCtrlEvLgToggleError));
+    /* the slave goes silent: after two unanswered requests */
+    Run(40, 0);
+    CHECK(SawNmtm(ID_S, kNmtErrCtrlEvLgNoAnswer));
+    CHECK_RET(CcmNmtmGetSlaveInfo(ID_S, &Info), kCopSuccessful);
+    CHECK(Info.m_bMissedAnswers >= 2);
+    /* guarding off */
+    Guard.m_wLifeguardTime = 0;
+    CHECK_RET(CcmConfigLgm(ID_S, &Guard), kCopSuccessful);
+    SimSelectNode(SIM_S);
+    TestDrainSent();
+    TestProcess(2);                                     /* the slave answers what is queued */
+    SimSelectNode(SIM_M);
+    Run(5, 1);
+    TestDrainSent();
+}
+
+static void Heartbeat (void)
+{
+    tHbcProdParam aProducer[2];
+    BYTE bState = 0;
+    DWORD dwEntry = 0;
+    tObdSize Size = sizeof(dwEntry);
+
+    /* the slave produces every 20 ms */
+    SimSelectNode(SIM_S);
+    CHECK_RET(CcmConfigHbp(20), kCopSuccessful);
+    SimSelectNode(SIM_M);
+
+    aProducer[0].wHeartbeatTime_p = 50;
+    aProducer[0].bProducerNodeId_p = ID_S;
+    aProducer[0].bSubindex_p = 1;
+    aProducer[1] = aProducer[0];
+    aProducer[1].bSubindex_p = 2;
+    CHECK_RET(CcmHbcDefineProducerTab(NULL, 1), kCopInvalidParam);
+    CHECK_RET(CcmHbcDefineProducerTab(aProducer, 2), kCopHbcEntryAlreadyExist);   /* node 3 twice */
+    aProducer[1].bSubindex_p = 0;
+    aProducer[1].bProducerNodeId_p = 4;
+    CHECK_RET(CcmHbcDefineProducerTab(&aProducer[1], 1), kCopHbcNoFreeEntry);     /* subindex 0 */
+    aProducer[1].bSubindex_p = 3;
+    CHECK_RET(CcmHbcDefineProducerTab(&aProducer[1], 1), kCopHbcNoFreeEntry);     /* 0x1016 has 2 */
+    CHECK_RET(CcmHbcGetNodeState(ID_S, &bState), kCopHbcEntryNotExist);           /* not supervised */
+    CHECK_RET(CcmHbcDefineProducerTab(aProducer, 1), kCopSuccessful);
+    CHECK_RET(CcmReadObject(0x1016, 1, &dwEntry, &Size), kCopSuccessful);
+    CHECK_EQ(dwEntry, ((DWORD) ID_S << 16) | 50);
+
+    Run(30, 1);
+    CHECK(SawHbc(ID_S, kNmtErrCtrlEvHbcConnected));
+    CHECK_RET(CcmHbcGetNodeState(ID_S, &bState), kCopSuccessful);
+    CHECK_EQ(bState, kNodeStateOperational);
+    CHECK_RET(CcmHbcGetNodeState(ID_S, NULL), kCopInvalidParam);
+    CHECK_RET(CcmHbcGetNodeState(9, &bState), kCopHbcEntryNotExist);
+
+    /* the slave goes silent for more than 50 ms */
+    Run(80, 0);
+    CHECK(SawHbc(ID_S, kNmtErrCtrlEvHbcConnectionLost));
+
+    SimSelectNode(SIM_S);
+    CHECK_RET(CcmConfigHbp(0), kCopSuccessful);
+    TestProcess(1);
+    SimSelectNode(SIM_M);
+    aProducer[0].wHeartbeatTime_p = 0;                  /* supervision off */
+    CHECK_RET(CcmHbcDefineProducerTab(aProducer, 1), kCopSuccessful);
+    Run(2, 1);
+    TestDrainSent();
+}
+
+static void SdoClient (void)
+{
+    static CONST BYTE abDownload[8] = { 0x2F, 0x00, 0x62, 0x01, 0xFF, 0x00, 0x00, 0x00 };
+    static CONST BYTE abUpload[8] = { 0x40, 0x18, 0x10, 0x02, 0x00, 0x00, 0x00, 0x00 };
+    tSdocParam Client;
+    tSdocTransferParam Transfer;
+    tSdocState State;
+    BYTE abData[4];
+    BYTE bOut = 0xFF;
+    DWORD dwAbort = 0;
+    DWORD dwBytes = 0;
+
+    /* the client channel: predefined connection set of node 3 */
+    memset(&Client, 0, sizeof(Client));
+    Client.m_bValidFlags = kSdocValidFlagServerNodeId;
+    Client.m_wClientIndex = 0x1280;
+    Client.m_bServerNodeId = ID_S;
+    CHECK_RET(CcmSdocDefineClientTab(NULL, 1), kCopInvalidParam);
+    Client.m_wClientIndex = 0x1281;
+    CHECK_RET(CcmSdocDefineClientTab(&Client, 1), kCopSdocClientNotExist);     /* SDO_MAX_CLIENT_IN_OBD 1 */
+    Client.m_wClientIndex = 0x1280;
+    CHECK_RET(CcmSdocDefineClientTab(&Client, 1), kCopSuccessful);
+    CHECK_EQ(SdocState(&dwAbort), kSdocTransferNotActive);
+
+    /* expedited download 0x6200/1 = 0xFF (seed 004, example 1) */
+    memset(&Transfer, 0, sizeof(Transfer));
+    Transfer.m_wClientIndex = 0x1280;
+    Transfer.m_wObjIndex = 0x6200;
+    Transfer.m_bObjSubIndex = 1;
+    Transfer.m_pData = &bOut;
+    Transfer.m_DataLen = 1;
+    Transfer.m_SdocType = kSdocTypeSegDown;
+    Transfer.m_pfnCbFinished = SdocFinished;
+    CHECK_RET(CcmSdocStartTransfer(NULL), kCopInvalidParam);
+    Transfer.m_SdocType = kSdocTypeBlockDown;
+    CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopSdocInvalidParam);
+    Transfer.m_SdocType = kSdocTypeSegDown;
+    Transfer.m_wClientIndex = 0x1281;
+    CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopSdocClientNotExist);
+    Transfer.m_wClientIndex = 0x1280;
+    CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopSuccessful);
+    TestExpectFrame("SDO download 0x6200/1", 0x600 + ID_S, 8, abDownload);
+    CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopSdocBusy);
+    CHECK_EQ(SdocState(&dwAbort), kSdocTransferRunning);
+    CHECK_RET(CcmSdocDefineClientTab(&Client, 1), kCopSdocBusy);
+    Run(2, 1);
+    CHECK_EQ(SdocState(&dwAbort), kSdocTransferFinished);
+    CHECK_EQ(dwAbort, 0);
+    CHECK_EQ(uFinished_g, 1);
+    CHECK_EQ(LastFinish_g.m_wClientIndex, 0x1280);
+    CHECK_EQ(LastFinish_g.m_SdocState, kSdocTransferFinished);
+    SimSelectNode(SIM_S);
+    CHECK_EQ(TestReadU8(0x6200, 1), 0xFF);
+    SimSelectNode(SIM_M);
+    TestDrainSent();
+
+    /* expedited upload 0x1018/2: the product code, as the bytes travel */
+    memset(abData, 0, sizeof(abData));
+    Transfer.m_wObjIndex = 0x1018;
+    Transfer.m_bObjSubIndex = 2;
+    Transfer.m_pData = abData;
+    Transfer.m_DataLen = sizeof(abData);
+    Transfer.m_SdocType = kSdocTypeSegUp;
+    Transfer.m_pfnCbFinished = NULL;
+    CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopSuccessful);
+    TestExpectFrame("SDO upload 0x1018/2", 0x600 + ID_S, 8, abUpload);
+    Run(2, 1);
+    CHECK_EQ(SdocState(&dwAbort), kSdocTransferFinished);
+    CHECK_EQ(abData[0], 0x02);
+    CHECK_EQ(abData[1], 0x00);
+    CHECK_EQ(abData[2], 0x00);
+    CHECK_EQ(abData[3], 0x00);
+    CHECK_RET(SdocGetTransmittedBytes(0x1280, &dwBytes), kCopSuccessful);
+    CHECK_EQ(dwBytes, 4);
+    CHECK_RET(SdocGetTransmittedBytes(0x1280, NULL), kCopInvalidParam);
+    CHECK_RET(SdocGetTransmittedBytes(0x1281, &dwBytes), kCopSdocClientNotExist);
+    CHECK_EQ(uFinished_g, 1);                           /* no callback given this time */
+    TestDrainSent();
+
+    /* the server refuses: object does not exist */
+    Transfer.m_wObjIndex = 0x1FFF;
+    Transfer.m_bObjSubIndex = 0;
+    CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopSuccessful);
+    Run(2, 1);
+    CHECK_EQ(SdocState(&dwAbort), kSdocTransferRxAborted);
+    CHECK_EQ(dwAbort, SDOAC_OBJECT_NOT_EXIST);
+    TestDrainSent();
+
+    /* the client aborts a running transfer */
+    Transfer.m_wObjIndex = 0x1018;
+    Transfer.m_bObjSubIndex = 1;
+    CHECK_RET(CcmSdocAbort(0x1280, SDOAC_GENERAL_ERROR), kCopSdocTransferError);   /* nothing running */
+    CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopSuccessful);
+    TestDrainSent();
+    CHECK_RET(CcmSdocAbort(0x1281, SDOAC_GENERAL_ERROR), kCopSdocClientNotExist);
+    CHECK_RET(CcmSdocAbort(0x1280, SDOAC_GENERAL_ERROR), kCopSuccessful);
+    {
+        static CONST BYTE abAbort[8] = { 0x80, 0x18, 0x10, 0x01, 0x00, 0x00, 0x00, 0x08 };
+        TestExpectFrame("SDO abort from the client", 0x600 + ID_S, 8, abAbort);
+    }
+    CHECK_EQ(SdocState(&dwAbort), kSdocTransferTxAborted);
+    CHECK_EQ(dwAbort, SDOAC_GENERAL_ERROR);
+    Run(2, 1);
+    TestDrainSent();
+
+    /* no answer: the client's timeout (100 ms) */
+    Transfer.m_TimeOut = 1000;                          /* ticks of 100 us */
+    Transfer.m_pfnCbFinished = SdocFinished;
+    CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopSuccessful);
+    Run(150, 0);
+    CHECK_EQ(SdocState(&dwAbort), kSdocTransferTxAborted);
+    CHECK_EQ(dwAbort, SDOAC_TIME_OUT);
+    CHECK_EQ(uFinished_g, 2);
+    CHECK_EQ(LastFinish_g.m_dwAbortCode, SDOAC_TIME_OUT);
+    CHECK_RET(CcmSdocGetState(0x1280, NULL, &dwAbort), kCopInvalidParam);
+    CHECK_RET(CcmSdocGetState(0x1280, &State, NULL), kCopInvalidParam);
+    CHECK_RET(CcmSdocGetState(0x1281, &State, &dwAbort), kCopSdocClientNotExist);
+    TestDrainSent();
+}
+
+int main (void)
+{
+    SimReset();
+    SimSetTrace(1);
+
+    BeforeInit();
+    StartUp();
+    Guarding();
+    Heartbeat();
+    SdoClient();
+
+    SimSelectNode(SIM_S);
+    CHECK_RET(CcmShutDownCANopen(), kCopSuccessful);
+    SimSelectNode(SIM_M);
+    CHECK_RET(CcmShutDownCANopen(), kCopSuccessful);
+    return TEST_DONE("test_master_api");
+}
