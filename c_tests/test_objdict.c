@@ -81,8 +81,10 @@ static void Generic (void)
 
     /* SDO server 0x1200 (no sub 3, COB-IDs read-only), 0x1201, client 0x1280 */
     READ_EXPECT(0x1200, 0, BYTE, 2);
-    READ_EXPECT(0x1200, 1, DWORD, 0x600);
-    READ_EXPECT(0x1200, 2, DWORD, 0x580);
+    /* objdict.h declares the predefined base; the object shows the COB-ID in
+     * use, base + node-ID 2 (CiA 301: 0x1200 holds the COB-IDs in use) */
+    READ_EXPECT(0x1200, 1, DWORD, 0x600 + 2);
+    READ_EXPECT(0x1200, 2, DWORD, 0x580 + 2);
     READ_FAILS(0x1200, 3, kCopObdSubindexNotExist);
     WRITE_VALUE(0x1200, 1, DWORD, 0x601, kCopObdWriteViolation);
     WRITE_VALUE(0x1200, 0, BYTE, 3, kCopObdWriteViolation);

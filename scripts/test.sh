@@ -42,7 +42,7 @@ run_stage() {
         ;;
     header)
         stage "cbindgen --verify (include/cop.h is up to date)"
-        cbindgen --config cbindgen.toml --crate cop --output include/cop.h --verify
+        cbindgen --quiet --config cbindgen.toml --crate cop --output include/cop.h --verify
         ;;
     c)
         stage "CMake build and CTest (ASan/UBSan)"
