@@ -2,7 +2,7 @@
 # The complete test run: everything CI checks, in one command.
 #   scripts/test.sh            all stages
 #   scripts/test.sh rust c     only the named stages
-# Stages: lint rust header c peer target bigendian miri fuzz bench
+# Stages: lint rust faults header c peer target bigendian miri fuzz bench
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
@@ -13,7 +13,7 @@ scripts/setup.sh
 
 STAGES=("$@")
 if [ "${#STAGES[@]}" -eq 0 ]; then
-    STAGES=(lint rust header c peer target bigendian miri fuzz bench)
+    STAGES=(lint rust faults header c peer target bigendian miri fuzz bench)
 fi
 
 stage() { printf '\n=== %s ===\n' "$*"; }
@@ -39,6 +39,12 @@ run_stage() {
         CARGO_TARGET_DIR=target/variant-b cargo test -q --no-default-features --features srdo-check-srvt-before-1strx,srdo-dummy-mapping,srdo-allow-gaps
         stage "dcf2bin (host tool; its python-canopen comparisons need scripts/setup.sh)"
         CARGO_TARGET_DIR=target/dcf2bin cargo test -q --manifest-path tools/dcf2bin/Cargo.toml
+        ;;
+    faults)
+        # The same campaign runs as a test in every `rust` variant; this
+        # stage prints its table. Long run: --cycles 10000000 with --release.
+        stage "SRDO fault-injection campaign (10^5 cycles, fixed seed)"
+        cargo run -q --example fault_injection -- --cycles 100000 --seed 0x5EED0304
         ;;
     header)
         stage "cbindgen --verify (include/cop.h is up to date)"

@@ -14,6 +14,9 @@ use std::rc::Rc;
 use crate::error::{CopKernel, CopResult};
 use crate::port::{CanFrame, CanPort, Clock, Priority, RxFrame, Ticks};
 
+pub mod faults;
+pub mod srdo_net;
+
 /// What a fault filter does with a frame.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Delivery {
