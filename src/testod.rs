@@ -8,6 +8,8 @@
 use core::sync::atomic::AtomicU8;
 
 use crate::od::{Access, DataType, ObdEntry, ObdSubEntry, ObdVarEntry, ObjectDictionary, decl};
+use crate::pdo::PDO_MAX_MAPPENTRIES;
+use crate::pdo::decl::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
 
 static DEVICE_TYPE: [u8; 4] = 0x0001_0191u32.to_ne_bytes();
 static S1000: [ObdSubEntry; 1] = [ObdSubEntry::rom(
@@ -147,12 +149,48 @@ static S200B: [ObdSubEntry; 1] = [ObdSubEntry::ram(
     None,
 )];
 
-static GENERIC: [ObdEntry; 5] = [
+// Two receive and two transmit PDOs: RPDO 1 (0x200 + node-ID, type 255)
+// maps 0x2000 and 0x2002; TPDO 1 (0x180 + node-ID, type 255) maps 0x2001;
+// PDO 2 of each direction is invalid (bit 31) and unmapped.
+static V1400: CommuVars = CommuVars::new();
+static D1400: CommuDefaults = CommuDefaults::new(0x200, 255, 0, 0);
+static S1400: [ObdSubEntry; 5] = commu_subs(&V1400, &D1400);
+static V1401: CommuVars = CommuVars::new();
+static D1401: CommuDefaults = CommuDefaults::new(0x8000_0300, 255, 0, 0);
+static S1401: [ObdSubEntry; 5] = commu_subs(&V1401, &D1401);
+static V1600: MappVars = MappVars::new();
+static D1600: MappDefaults = MappDefaults::new(&[0x2000_0008, 0x2002_0020]);
+static S1600: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1600, &D1600);
+static V1601: MappVars = MappVars::new();
+static D1601: MappDefaults = MappDefaults::new(&[]);
+static S1601: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1601, &D1601);
+static V1800: CommuVars = CommuVars::new();
+static D1800: CommuDefaults = CommuDefaults::new(0x180, 255, 0, 0);
+static S1800: [ObdSubEntry; 5] = commu_subs(&V1800, &D1800);
+static V1801: CommuVars = CommuVars::new();
+static D1801: CommuDefaults = CommuDefaults::new(0x8000_0280, 255, 0, 0);
+static S1801: [ObdSubEntry; 5] = commu_subs(&V1801, &D1801);
+static V1A00: MappVars = MappVars::new();
+static D1A00: MappDefaults = MappDefaults::new(&[0x2001_0010]);
+static S1A00: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1A00, &D1A00);
+static V1A01: MappVars = MappVars::new();
+static D1A01: MappDefaults = MappDefaults::new(&[]);
+static S1A01: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1A01, &D1A01);
+
+static GENERIC: [ObdEntry; 13] = [
     ObdEntry::new(0x1000, &S1000, None),
     ObdEntry::new(0x1001, &S1001, None),
     ObdEntry::new(0x1008, &S1008, None),
     ObdEntry::new(0x1017, &S1017, None),
     ObdEntry::new(0x1018, &S1018, None),
+    ObdEntry::new(0x1400, &S1400, None),
+    ObdEntry::new(0x1401, &S1401, None),
+    ObdEntry::new(0x1600, &S1600, None),
+    ObdEntry::new(0x1601, &S1601, None),
+    ObdEntry::new(0x1800, &S1800, None),
+    ObdEntry::new(0x1801, &S1801, None),
+    ObdEntry::new(0x1A00, &S1A00, None),
+    ObdEntry::new(0x1A01, &S1A01, None),
 ];
 
 /// Element array of 0x2007 (8 × U8, subindices 1..8).
@@ -199,7 +237,7 @@ mod tests {
     #[test]
     fn reference_dictionary_is_valid_and_usable() {
         let od = dictionary();
-        assert_eq!(od.len(), 17);
+        assert_eq!(od.len(), 25);
         // The stack restores the defaults at reset; do the same here.
         od.restore_defaults(0x1000, 0xFFFF);
         let mut b = [0u8; 64];
