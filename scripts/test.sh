@@ -94,6 +94,8 @@ run_stage() {
 }
 
 for s in "${STAGES[@]}"; do
+    t0=$(date +%s)
     run_stage "$s"
+    printf -- '--- stage %s: %ds\n' "$s" $(( $(date +%s) - t0 ))
 done
 printf '\nall stages passed (%s) in %ds\n' "${STAGES[*]}" $(( $(date +%s) - started ))
