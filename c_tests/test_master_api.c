@@ -11,9 +11,9 @@
  * CcmDefineSlaveTab, CcmSendNmtCommand, CcmBootNetwork, CcmTriggerNodeGuard,
  * CcmConfigLgm, CcmNmtmGetSlaveInfo, CcmInitHbc, CcmInitHbcEx (connected,
  * lost), CcmHbcDefineProducerTab, CcmHbcGetNodeState,
- * CcmSdocDefineClientTab, CcmSdocStartTransfer (download, upload, the
- * server's abort, timeout, finish callback), CcmSdocAbort, CcmSdocGetState,
- * SdocGetTransmittedBytes.
+ * CcmSdocDefineClientTab, CcmSdocStartTransfer (download, upload, block
+ * download, block upload, the server's abort, timeout, finish callback),
+ * CcmSdocAbort, CcmSdocGetState, SdocGetTransmittedBytes.
  */
 #include "test_util.h"
 
@@ -354,7 +354,7 @@ static void SdoClient (void)
     Transfer.m_SdocType = kSdocTypeSegDown;
     Transfer.m_pfnCbFinished = SdocFinished;
     CHECK_RET(CcmSdocStartTransfer(NULL), kCopInvalidParam);
-    Transfer.m_SdocType = kSdocTypeBlockDown;
+    Transfer.m_SdocType = kSdocTypeBlockUp + 1;        /* no tSdocType */
     CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopSdocInvalidParam);
     Transfer.m_SdocType = kSdocTypeSegDown;
     Transfer.m_wClientIndex = 0x1281;
@@ -440,6 +440,87 @@ static void SdoClient (void)
     TestDrainSent();
 }
 
+/* kSdocTypeBlockDown / kSdocTypeBlockUp (CiA 301 SDO block download and
+ * block upload protocols) against the slave's server. */
+static void SdoBlock (void)
+{
+    /* C6: ccs 6, CRC supported, size indicated; size 2 */
+    static CONST BYTE abInitDown[8] = { 0xC6, 0x17, 0x10, 0x00, 0x02, 0x00, 0x00, 0x00 };
+    /* A4: ccs 5, CRC supported; blksize, pst 0 */
+    static CONST BYTE abInitUp[8] = { 0xA4, 0x18, 0x10, 0x02, SDO_BLOCKSIZE_UPLOAD, 0x00, 0x00, 0x00 };
+    /* C6: scs 6, CRC supported, size indicated; 4 bytes */
+    static CONST BYTE abInitUpResp[8] = { 0xC6, 0x18, 0x10, 0x02, 0x04, 0x00, 0x00, 0x00 };
+    tSdocTransferParam Transfer;
+    BYTE abHeartbeat[2] = { 0xE8, 0x03 };               /* 1000 ms */
+    BYTE abData[8];
+    WORD wHeartbeat = 0;
+    tObdSize Size = sizeof(wHeartbeat);
+    DWORD dwAbort = 0;
+    DWORD dwBytes = 0;
+
+    Run(5, 1);
+    TestDrainSent();
+    uFinished_g = 0;
+
+    memset(&Transfer, 0, sizeof(Transfer));
+    Transfer.m_wClientIndex = 0x1280;
+    Transfer.m_wObjIndex = 0x1017;
+    Transfer.m_bObjSubIndex = 0;
+    Transfer.m_pData = abHeartbeat;
+    Transfer.m_DataLen = sizeof(abHeartbeat);
+    Transfer.m_SdocType = kSdocTypeBlockDown;
+    Transfer.m_pfnCbFinished = SdocFinished;
+    CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopSuccessful);
+    TestExpectFrame("SDO block download initiate 0x1017", 0x600 + ID_S, 8, abInitDown);
+    CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopSdocBusy);
+    Run(6, 1);
+    CHECK_EQ(SdocState(&dwAbort), kSdocTransferFinished);
+    CHECK_EQ(dwAbort, 0);
+    CHECK_EQ(uFinished_g, 1);
+    CHECK_EQ(LastFinish_g.m_SdocState, kSdocTransferFinished);
+    CHECK_RET(SdocGetTransmittedBytes(0x1280, &dwBytes), kCopSuccessful);
+    CHECK_EQ(dwBytes, 2);
+    SimSelectNode(SIM_S);
+    CHECK_RET(CcmReadObject(0x1017, 0, &wHeartbeat, &Size), kCopSuccessful);
+    CHECK_EQ(wHeartbeat, 1000);
+    SimSelectNode(SIM_M);
+    TestDrainSent();
+
+    memset(abData, 0xEE, sizeof(abData));
+    Transfer.m_wObjIndex = 0x1018;
+    Transfer.m_bObjSubIndex = 2;
+    Transfer.m_pData = abData;
+    Transfer.m_DataLen = sizeof(abData);
+    Transfer.m_SdocType = kSdocTypeBlockUp;
+    CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopSuccessful);
+    TestExpectFrame("SDO block upload initiate 0x1018/2", 0x600 + ID_S, 8, abInitUp);
+    SimSelectNode(SIM_S);
+    (void) CcmProcess();
+    TestExpectFrame("SDO block upload initiate response", 0x580 + ID_S, 8, abInitUpResp);
+    Run(6, 1);
+    CHECK_EQ(SdocState(&dwAbort), kSdocTransferFinished);
+    CHECK_EQ(dwAbort, 0);
+    CHECK_EQ(uFinished_g, 2);
+    CHECK_RET(SdocGetTransmittedBytes(0x1280, &dwBytes), kCopSuccessful);
+    CHECK_EQ(dwBytes, 4);
+    CHECK_EQ(abData[0], 0x02);                          /* product code 0x00000002 */
+    CHECK_EQ(abData[1], 0x00);
+    CHECK_EQ(abData[3], 0x00);
+    CHECK_EQ(abData[4], 0xEE);                          /* nothing past the value */
+    CHECK_EQ(abData[7], 0xEE);
+
+    /* the server's refusal: 0x1000 is read-only */
+    Transfer.m_wObjIndex = 0x1000;
+    Transfer.m_bObjSubIndex = 0;
+    Transfer.m_DataLen = 4;
+    Transfer.m_SdocType = kSdocTypeBlockDown;
+    CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopSuccessful);
+    Run(3, 1);
+    CHECK_EQ(SdocState(&dwAbort), kSdocTransferRxAborted);
+    CHECK_EQ(dwAbort, SDOAC_WRITE_TO_READ_ONLY_OBJ);
+    TestDrainSent();
+}
+
 int main (void)
 {
     SimReset();
@@ -450,6 +531,7 @@ int main (void)
     Guarding();
     Heartbeat();
     SdoClient();
+    SdoBlock();
 
     SimSelectNode(SIM_S);
     CHECK_RET(CcmShutDownCANopen(), kCopSuccessful);

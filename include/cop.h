@@ -326,11 +326,14 @@ tCopKernel CcmHbcGetNodeState(BYTE bNodeId_p, BYTE *pNodeState_p);
 tCopKernel CcmSdocDefineClientTab(const tSdocParam *pClientTab_p, BYTE bNumOfClients_p);
 
 /**
- * `CcmSdocStartTransfer`: starts an upload (kSdocTypeSegUp) or download
- * (kSdocTypeSegDown; expedited when ≤ 4 bytes) on a client channel. The
- * buffer `m_pData` is used directly until the transfer ends and an upload
- * never writes more than `m_DataLen` bytes. kCopInvalidParam (NULL),
- * kCopSdocInvalidParam (block transfer types, bad sizes),
+ * `CcmSdocStartTransfer`: starts an upload (kSdocTypeSegUp), a download
+ * (kSdocTypeSegDown; expedited when ≤ 4 bytes), a block download
+ * (kSdocTypeBlockDown) or a block upload (kSdocTypeBlockUp; a server that
+ * answers with the SDO upload protocol instead is followed) on a client
+ * channel; block transfers use the CRC when the server supports it.
+ * The buffer `m_pData` is used directly until the transfer ends and an
+ * upload never writes more than `m_DataLen` bytes. kCopInvalidParam (NULL),
+ * kCopSdocInvalidParam (unknown type, bad sizes),
  * kCopSdocClientNotExist, kCopSdocBusy, kCopNmtStateError (not connected
  * or STOPPED), or the driver's code.
  *

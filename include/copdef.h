@@ -344,6 +344,11 @@
 #endif
 
 /* ---- SDO ----------------------------------------------------------------- */
+/* Block transfer (CiA 301) is always part of this library and always offers
+ * the CRC: SDO_BLOCKTRANSFER and SDO_CALCULATE_CRC are kept for source
+ * compatibility only. SDO_BLOCKSIZE_DOWNLOAD is the number of segments per
+ * sub-block the SDO server accepts in a block download, SDO_BLOCKSIZE_UPLOAD
+ * the number the SDO client accepts in a block upload (1..127 each). */
 #ifndef SDO_BLOCKTRANSFER
 #define SDO_BLOCKTRANSFER FALSE
 #endif

@@ -440,7 +440,7 @@ DWORD PeerSdocDefine (BYTE bServer_p, DWORD dwTxCobId_p, DWORD dwRxCobId_p, DWOR
     return (DWORD) CcmSdocDefineClientTab(&Client, 1);
 }
 
-DWORD PeerSdocStart (WORD wIndex_p, BYTE bSub_p, int fUpload_p, CONST BYTE* pbData_p, DWORD dwLen_p)
+DWORD PeerSdocStart (WORD wIndex_p, BYTE bSub_p, int iType_p, CONST BYTE* pbData_p, DWORD dwLen_p)
 {
     tSdocTransferParam Transfer;
 
@@ -449,7 +449,7 @@ DWORD PeerSdocStart (WORD wIndex_p, BYTE bSub_p, int fUpload_p, CONST BYTE* pbDa
         return (DWORD) kCopInvalidParam;
     }
     memset(abPeerSdocBuf_g, 0, sizeof(abPeerSdocBuf_g));
-    if (!fUpload_p && (pbData_p != NULL))
+    if (((iType_p == kSdocTypeSegDown) || (iType_p == kSdocTypeBlockDown)) && (pbData_p != NULL))
     {
         memcpy(abPeerSdocBuf_g, pbData_p, dwLen_p);
     }
@@ -460,7 +460,7 @@ DWORD PeerSdocStart (WORD wIndex_p, BYTE bSub_p, int fUpload_p, CONST BYTE* pbDa
     Transfer.m_pData = abPeerSdocBuf_g;
     Transfer.m_DataLen = (tObdSize) dwLen_p;
     Transfer.m_TimeOut = 0;     /* the channel's timeout */
-    Transfer.m_SdocType = fUpload_p ? kSdocTypeSegUp : kSdocTypeSegDown;
+    Transfer.m_SdocType = (tSdocType) iType_p;
     Transfer.m_pfnCbFinished = PeerSdocFinished;
     return (DWORD) CcmSdocStartTransfer(&Transfer);
 }

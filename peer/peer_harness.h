@@ -89,8 +89,10 @@ DWORD PeerNmtmCommand (BYTE bNode_p, WORD wCommand_p);                  /* CcmSe
  * server->client, timeout in ticks (all four fields valid). */
 DWORD PeerSdocDefine (BYTE bServer_p, DWORD dwTxCobId_p, DWORD dwRxCobId_p, DWORD dwTimeoutTicks_p);
 /* CcmSdocStartTransfer on the harness's own buffer: a download sends
- * dwLen_p bytes of pbData_p, an upload receives at most dwLen_p bytes. */
-DWORD PeerSdocStart (WORD wIndex_p, BYTE bSub_p, int fUpload_p, CONST BYTE* pbData_p, DWORD dwLen_p);
+ * dwLen_p bytes of pbData_p, an upload receives at most dwLen_p bytes.
+ * iType_p is the tSdocType (kSdocTypeSegDown 0, kSdocTypeSegUp 1,
+ * kSdocTypeBlockDown 2, kSdocTypeBlockUp 3). */
+DWORD PeerSdocStart (WORD wIndex_p, BYTE bSub_p, int iType_p, CONST BYTE* pbData_p, DWORD dwLen_p);
 DWORD PeerSdocState (DWORD* pdwState_p, DWORD* pdwAbort_p);             /* CcmSdocGetState */
 DWORD PeerSdocBytes (DWORD* pdwBytes_p);                                /* SdocGetTransmittedBytes */
 /* Copies up to dwMax_p bytes of the transfer buffer; returns the count. */

@@ -469,6 +469,7 @@ impl Stack {
         if let Some(f) = self.sdo.poll(&self.od, now) {
             let _ = port.send(&f, Priority::Low);
         }
+        self.send_sdo_segments(port, now);
         if self.connected && self.state != NmtState::Initialisation {
             self.hb.poll(port, self.node_id, self.state as u8, now);
         }
@@ -534,11 +535,23 @@ impl Stack {
             if let Some(r) = reply {
                 let _ = port.send(&r, Priority::Low);
             }
+            self.send_sdo_segments(port, now);
             if changed {
                 self.sdo.reconfigure(&self.od, self.node_id);
                 self.sdoc.reconfigure(&self.od);
                 self.subscribe(port);
             }
+        }
+    }
+
+    /// Hands the segments of a block upload to the driver until it refuses
+    /// one (a full transmit buffer); the rest goes in the next cycle.
+    fn send_sdo_segments(&mut self, port: &mut impl CanPort, now: Ticks) {
+        while let Some(f) = self.sdo.pending_segment() {
+            if port.send(&f, Priority::Low).is_err() {
+                break;
+            }
+            self.sdo.segment_sent(now);
         }
     }
 

@@ -860,11 +860,23 @@ fn unknown_and_unexpected_commands() {
         rig.sdo([0xE0, 0x00, 0x10, 0x00, 0, 0, 0, 0]),
         abort(0x1000, 0, SdoAbort::UnknownCommand)
     );
-    // Block download initiate (CiA 301 SDO block download protocol, ccs = 6): not supported.
+    // Block download initiate (CiA 301 SDO block download protocol, ccs = 6)
+    // is served: A4 = scs 5 with CRC support, block size in byte 4. Inside
+    // the sub-block only the client's abort (0x80) ends it, unanswered.
     assert_eq!(
         rig.sdo([0xC6, 0x00, 0x20, 0x00, 0x20, 0, 0, 0]),
-        abort(0x2000, 0, SdoAbort::UnknownCommand)
+        [
+            0xA4,
+            0x00,
+            0x20,
+            0x00,
+            cop::config::SDO_BLOCKSIZE_DOWNLOAD,
+            0,
+            0,
+            0
+        ]
     );
+    rig.client_abort(0x2000, 0);
     // Segment request with no transfer: multiplexer 0000h/00h.
     assert_eq!(
         rig.sdo([0x60, 0, 0, 0, 0, 0, 0, 0]),

@@ -1,8 +1,9 @@
 //! SDO server fuzzing: arbitrary frame sequences (requests on the server's
 //! COB-ID and unrelated frames, with time passing between them) against a
 //! device with the reference dictionary. Checked on every input: no crash,
-//! every answer is a well-formed SDO response (DLC 8, a server command
-//! specifier), and constant objects never change.
+//! every answer is a well-formed SDO frame (DLC 8), and constant objects
+//! never change. (Block upload segments may carry any byte 0, so the
+//! command specifier is no longer checked.)
 #![no_main]
 
 use cop::ccm::Stack;
@@ -44,8 +45,6 @@ fuzz_target!(|data: &[u8]| {
             continue;
         }
         assert_eq!(f.len, 8, "SDO responses always carry 8 bytes");
-        let scs = f.data[0] >> 5;
-        assert!(matches!(scs, 0 | 1 | 2 | 3 | 4), "server command specifier {scs}");
     }
     let mut b = [0u8; 4];
     assert_eq!(stack.read_object(0x1000, 0, ByteOrder::Wire, &mut b), Ok(4));

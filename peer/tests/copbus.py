@@ -315,10 +315,13 @@ class PeerLibrary:
     def sdoc_define(self, server, tx_cobid, rx_cobid, timeout_ms):
         self._check("PeerSdocDefine", server, tx_cobid, rx_cobid, timeout_ms * TICKS_PER_SECOND // 1000)
 
-    def sdoc_start(self, index, sub, upload, data=b"", length=None):
+    def sdoc_start(self, index, sub, upload, data=b"", length=None, block=False):
+        """CcmSdocStartTransfer: segmented (expedited when short) or, with
+        block, kSdocTypeBlockDown / kSdocTypeBlockUp."""
         length = len(data) if length is None else length
         buf = (ctypes.c_uint8 * max(1, len(data)))(*data)
-        self._check("PeerSdocStart", index, sub, 1 if upload else 0, buf, length)
+        sdoc_type = (3 if upload else 2) if block else (1 if upload else 0)
+        self._check("PeerSdocStart", index, sub, sdoc_type, buf, length)
 
     def sdoc_state(self):
         """(tSdocState, abort code) of channel 0x1280."""

@@ -1,7 +1,9 @@
 """The library's SDO client (CcmSdocDefineClientTab, CcmSdocStartTransfer,
 CcmSdocGetState, SdocGetTransmittedBytes) against python-canopen's SDO
 server (a LocalNode with node-ID 0x22): expedited and segmented upload and
-download, and the server's aborts reported by CcmSdocGetState."""
+download, block requests (python-canopen 2.4.1's server answers a block
+upload with the SDO upload protocol and refuses a block download), and the
+server's aborts reported by CcmSdocGetState."""
 
 import struct
 import unittest
@@ -54,9 +56,9 @@ class SdoClient(PeerTestCase):
         self.peer.sdoc_define(SERVER_ID, 0x600 + SERVER_ID, 0x580 + SERVER_ID, 1000)
         self.peer.take_events()
 
-    def transfer(self, index, sub, upload, data=b"", length=None):
+    def transfer(self, index, sub, upload, data=b"", length=None, block=False):
         """Runs one transfer to its end; returns (state, abort code)."""
-        self.peer.sdoc_start(index, sub, upload, data, length)
+        self.peer.sdoc_start(index, sub, upload, data, length, block)
         result = self.wait_until(
             lambda: (lambda s: s if s[0] != RUNNING else None)(self.peer.sdoc_state()), what="end of transfer"
         )
@@ -101,6 +103,37 @@ class SdoClient(PeerTestCase):
         frames = self.client_frames()
         self.assertEqual(frames[0], bytes([0x40, 0x02, 0x21, 0x00, 0, 0, 0, 0]))
         self.assertEqual([f[0] for f in frames[1:]], [0x60 | (0x10 * (i % 2)) for i in range(len(frames) - 1)])
+
+    def test_block_upload_follows_the_protocol_switch(self):
+        """kSdocTypeBlockUp: the client asks for a block upload (A4 = ccs 5
+        with CRC support, blksize, pst 0); python-canopen's server answers
+        with the SDO upload protocol instead, which CiA 301 lets a server
+        do, and the client completes the transfer that way (segmented for
+        250 bytes, expedited for 4)."""
+        blob = bytes((i * 7 + 3) & 0xFF for i in range(250))
+        self.server.set_data(0x2102, 0, blob)
+        self.assertEqual(self.transfer(0x2102, 0, True, length=1024, block=True), (FINISHED, 0))
+        self.assertEqual(self.peer.sdoc_bytes(), 250)
+        self.assertEqual(self.peer.sdoc_data(250), blob)
+        frames = self.client_frames()
+        self.assertEqual(frames[0][:4], bytes([0xA4, 0x02, 0x21, 0x00]))
+        self.assertTrue(1 <= frames[0][4] <= 127, "blksize")
+        self.assertEqual(frames[0][5], 0, "pst")
+        self.assertEqual([f[0] for f in frames[1:]], [0x60 | (0x10 * (i % 2)) for i in range(len(frames) - 1)])
+        self.server.set_data(0x2100, 0, struct.pack("<I", 0x11223344))
+        self.assertEqual(self.transfer(0x2100, 0, True, length=4, block=True), (FINISHED, 0))
+        self.assertEqual(self.peer.sdoc_data(4), struct.pack("<I", 0x11223344))
+
+    def test_block_download_refused_by_the_server(self):
+        """kSdocTypeBlockDown: the initiate (C6 = ccs 6, CRC support, size)
+        goes out; python-canopen 2.4.1's server has no block download and
+        aborts with 0x05040001, which the client reports."""
+        text = b"block download " * 4
+        self.assertEqual(self.transfer(0x2101, 0, False, text, block=True), (RX_ABORTED, 0x05040001))
+        self.assertEqual(self.client_frames()[0], bytes([0xC6, 0x01, 0x21, 0x00, len(text), 0, 0, 0]))
+        # the channel is free again
+        self.assertEqual(self.transfer(0x2101, 0, False, text), (FINISHED, 0))
+        self.assertEqual(self.server.sdo[0x2101].raw, text.decode("ascii"))
 
     def test_aborts_of_the_server(self):
         """python-canopen's server refuses; the client reports the code."""

@@ -1,10 +1,11 @@
 """python-canopen's SDO client against the library's SDO server (CiA 301
-7.2.4): expedited and segmented transfers of every basic type, of a long
-VISIBLE_STRING and of a DOMAIN, and abort codes arriving as
+7.2.4): expedited, segmented and block transfers of every basic type, of a
+long VISIBLE_STRING and of a DOMAIN, and abort codes arriving as
 canopen.SdoAbortedError. Values are also checked on the library side
 (CcmReadObject, application variables), so both ends agree on the byte
 order."""
 
+import binascii
 import ctypes
 import struct
 import unittest
@@ -218,21 +219,6 @@ class Aborts(PeerTestCase):
         self.assert_abort(0x06090031, lambda: self.node.sdo.download(0x2000, 1, b"\x02"))
         self.assertEqual(self.node.sdo[0x2000][1].raw, True)
 
-    def test_block_transfer_is_refused(self):
-        """The server implements expedited and segmented transfer only: a
-        block upload or download initiate is answered with 0x05040001
-        (command specifier not valid), which python-canopen raises."""
-        with self.assertRaises(canopen.SdoAbortedError) as cm:
-            with self.node.sdo.open(0x2002, 0, "rb", block_transfer=True) as f:
-                f.read()
-        self.assertEqual(cm.exception.code, 0x05040001)
-        with self.assertRaises(canopen.SdoAbortedError) as cm:
-            with self.node.sdo.open(0x2002, 0, "wb", size=300, block_transfer=True) as f:
-                f.write(bytes(300))
-        self.assertEqual(cm.exception.code, 0x05040001)
-        # the server is ready for the next transfer
-        self.assertEqual(self.node.sdo[0x1000].raw, 0x00030191)
-
     def test_abort_carries_the_multiplexer(self):
         """The abort frame names the object of the request (CiA 301 7.2.4.3.17)."""
         self.peer.trace.clear()
@@ -253,6 +239,99 @@ class Emergency(PeerTestCase):
         self.assertEqual(err.data, b"\x01\x02\x03\x04\x05")
         frames = [m for who, m in self.peer.trace if who == "node" and m.arbitration_id == 0x85]
         self.assertEqual(len(frames), 1)
+
+
+
+class BlockTransfers(PeerTestCase):
+    """python-canopen's block client (CiA 301 SDO block download and block
+    upload, with CRC) against the server."""
+
+    def test_block_download(self):
+        """python-canopen's block download (CiA 301 SDO block download:
+        initiate with size and CRC support, sub-blocks of the block size the
+        server grants, end with n and CRC) of a 256-character string and of
+        the 300-byte domain; the value arrives whole (one write)."""
+        text = bytes(0x21 + (i * 11) % 94 for i in range(256))
+        self.peer.trace.clear()
+        with self.node.sdo.open(0x2001, 0, "wb", size=len(text), block_transfer=True) as f:
+            f.write(text)
+        self.assertEqual(self.peer.read(0x2001, 0), text)
+        requests = [bytes(m.data) for who, m in self.peer.trace if who == "python" and m.arbitration_id == 0x605]
+        responses = [bytes(m.data) for who, m in self.peer.trace if who == "node" and m.arbitration_id == 0x585]
+        # C6 = ccs 6, cc, s; size 256. A4 = scs 5, sc; blksize in byte 4.
+        self.assertEqual(requests[0], bytes([0xC6, 0x01, 0x20, 0x00, 0x00, 0x01, 0x00, 0x00]))
+        self.assertEqual(responses[0][:4], bytes([0xA4, 0x01, 0x20, 0x00]))
+        blksize = responses[0][4]
+        self.assertTrue(1 <= blksize <= 127)
+        # 37 segments in sub-blocks of blksize, each confirmed with A2 ackseq blksize
+        segments = (256 + 6) // 7
+        acks = [r for r in responses if r[0] == 0xA2]
+        self.assertEqual(len(acks), (segments + blksize - 1) // blksize)
+        self.assertTrue(all(a[2] == blksize for a in acks))
+        # end: C1 | n << 2 (n = 3 -> CD) with the CRC-16 (XMODEM) of the data; A1
+        end = requests[-1]
+        self.assertEqual(end[0], 0xCD)
+        self.assertEqual(struct.unpack_from("<H", end, 1)[0], binascii.crc_hqx(text, 0))
+        self.assertEqual(responses[-1], bytes([0xA1, 0, 0, 0, 0, 0, 0, 0]))
+
+        data = bytes((i * 29 + 3) & 0xFF for i in range(300))
+        with self.node.sdo.open(0x2002, 0, "wb", size=len(data), block_transfer=True) as f:
+            f.write(data)
+        domain = self.peer.var(ctypes.c_uint8 * 300, "abPeerDomain_g")
+        with self.peer.lock:
+            self.assertEqual(bytes(domain), data)
+
+    def test_block_upload(self):
+        """python-canopen's block upload (blksize 127, pst 0, CRC) of the
+        300-byte domain, of a string and of a 4-byte value: the server sends
+        its snapshot in sub-blocks and ends with n and the CRC, which
+        python-canopen checks."""
+        data = bytes((i * 53 + 1) & 0xFF for i in range(300))
+        self.node.sdo.download(0x2002, 0, data)
+        self.peer.trace.clear()
+        with self.node.sdo.open(0x2002, 0, "rb", block_transfer=True) as f:
+            self.assertEqual(f.read(), data)
+        requests = [bytes(m.data) for who, m in self.peer.trace if who == "python" and m.arbitration_id == 0x605]
+        responses = [bytes(m.data) for who, m in self.peer.trace if who == "node" and m.arbitration_id == 0x585]
+        # A4 = ccs 5, cc; blksize 127, pst 0 -> C6 = scs 6, sc, s; size 300 (2C 01)
+        self.assertEqual(requests[0], bytes([0xA4, 0x02, 0x20, 0x00, 0x7F, 0x00, 0x00, 0x00]))
+        self.assertEqual(responses[0], bytes([0xC6, 0x02, 0x20, 0x00, 0x2C, 0x01, 0x00, 0x00]))
+        self.assertEqual(requests[1], bytes([0xA3, 0, 0, 0, 0, 0, 0, 0]))
+        # 43 segments in one sub-block, the last with c = 1; confirmation A2 2B 7F
+        segments = responses[1:-1]
+        self.assertEqual([r[0] for r in segments], list(range(1, 43)) + [0x80 | 43])
+        self.assertIn(bytes([0xA2, 43, 0x7F, 0, 0, 0, 0, 0]), requests)
+        # end request: n = 1 -> C5, CRC; the end response A1
+        self.assertEqual(responses[-1][0], 0xC5)
+        self.assertEqual(struct.unpack_from("<H", responses[-1], 1)[0], binascii.crc_hqx(data, 0))
+        self.assertEqual(requests[-1], bytes([0xA1, 0, 0, 0, 0, 0, 0, 0]))
+
+        text = b"block upload of a string"
+        self.node.sdo[0x2001].raw = text.decode("ascii")
+        with self.node.sdo.open(0x2001, 0, "rb", block_transfer=True) as f:
+            self.assertEqual(f.read(), text)
+        with self.node.sdo.open(0x2000, 8, "rb", block_transfer=True) as f:
+            self.assertEqual(f.read(), struct.pack("<I", 0xC0FFEE32))
+        # the server is ready for the next transfer
+        self.assertEqual(self.node.sdo[0x1000].raw, 0x00030191)
+
+    def test_block_transfer_refusals(self):
+        """Block requests the server refuses get the dictionary's or the
+        protocol's abort, which python-canopen raises."""
+        with self.assertRaises(canopen.SdoAbortedError) as cm:
+            with self.node.sdo.open(0x2FFF, 0, "rb", block_transfer=True) as f:
+                f.read()
+        self.assertEqual(cm.exception.code, 0x06020000)
+        with self.assertRaises(canopen.SdoAbortedError) as cm:
+            with self.node.sdo.open(0x2010, 1, "wb", size=2, block_transfer=True) as f:
+                f.write(b"\x01\x02")
+        self.assertEqual(cm.exception.code, 0x06010002)
+        # 257 characters into the 256-character string: 0x06070012
+        with self.assertRaises(canopen.SdoAbortedError) as cm:
+            with self.node.sdo.open(0x2001, 0, "wb", size=257, block_transfer=True) as f:
+                f.write(b"x" * 257)
+        self.assertEqual(cm.exception.code, 0x06070012)
+        self.assertEqual(self.node.sdo[0x1000].raw, 0x00030191)
 
 
 if __name__ == "__main__":

@@ -322,11 +322,14 @@ pub unsafe extern "C" fn CcmSdocDefineClientTab(
     }))
 }
 
-/// `CcmSdocStartTransfer`: starts an upload (kSdocTypeSegUp) or download
-/// (kSdocTypeSegDown; expedited when ≤ 4 bytes) on a client channel. The
-/// buffer `m_pData` is used directly until the transfer ends and an upload
-/// never writes more than `m_DataLen` bytes. kCopInvalidParam (NULL),
-/// kCopSdocInvalidParam (block transfer types, bad sizes),
+/// `CcmSdocStartTransfer`: starts an upload (kSdocTypeSegUp), a download
+/// (kSdocTypeSegDown; expedited when ≤ 4 bytes), a block download
+/// (kSdocTypeBlockDown) or a block upload (kSdocTypeBlockUp; a server that
+/// answers with the SDO upload protocol instead is followed) on a client
+/// channel; block transfers use the CRC when the server supports it.
+/// The buffer `m_pData` is used directly until the transfer ends and an
+/// upload never writes more than `m_DataLen` bytes. kCopInvalidParam (NULL),
+/// kCopSdocInvalidParam (unknown type, bad sizes),
 /// kCopSdocClientNotExist, kCopSdocBusy, kCopNmtStateError (not connected
 /// or STOPPED), or the driver's code.
 ///
@@ -345,6 +348,8 @@ pub unsafe extern "C" fn CcmSdocStartTransfer(
     let dir = match p.m_SdocType {
         0 => crate::sdo::client::Direction::Download,
         1 => crate::sdo::client::Direction::Upload,
+        2 => crate::sdo::client::Direction::BlockDownload,
+        3 => crate::sdo::client::Direction::BlockUpload,
         _ => return CopKernel::SdocInvalidParam.code(),
     };
     let len = super::types::obd_size_len(p.m_DataLen);

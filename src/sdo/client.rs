@@ -1,6 +1,6 @@
-//! SDO client (CiA 301 SDO protocols, client side): expedited and segmented
-//! upload and download to remote SDO servers, one transfer per client
-//! channel at a time, several channels (servers) in parallel.
+//! SDO client (CiA 301 SDO protocols, client side): expedited, segmented
+//! and block upload and download to remote SDO servers, one transfer per
+//! client channel at a time, several channels (servers) in parallel.
 //!
 //! The caller's buffer is used directly, without a copy: a download reads
 //! from it, an upload writes into it and never past its length. A reply
@@ -9,16 +9,42 @@
 //! 0x08000000 general error), and every abort received from the server is
 //! reported with its code. The transfer state and the abort code are what
 //! `CcmSdocGetState` reports; the end of a transfer is also an
-//! [`Event::SdocFinished`].
+//! [`Event::SdocFinished`]. Frames with a data length other than 8 are not
+//! SDO frames and are ignored.
+//!
+//! # Block transfer (`kSdocTypeBlockDown` / `kSdocTypeBlockUp`)
+//! * Both directions offer the CRC; it is used when the server offers it
+//!   too, and a wrong CRC of an upload aborts with 0x05040004.
+//! * Block download: the client announces the size; the server sets the
+//!   block size. Segments go out while the driver accepts them; the rest
+//!   follows in the next cycle ([`SdoClient::poll`]). A confirmation with
+//!   ackseq below the segments sent makes the client send again from
+//!   ackseq + 1; one naming more than were sent aborts with 0x05040003, a
+//!   block size outside 1..=127 with 0x05040002.
+//! * Block upload: the client accepts [`SDO_BLOCKSIZE_UPLOAD`] segments per
+//!   sub-block and sends the protocol switch threshold [`BLOCK_UPLOAD_PST`]
+//!   (0: no switch invited). A server that answers with the SDO upload
+//!   protocol (expedited or segmented) all the same is followed, and the
+//!   transfer completes as that protocol: CiA 301 lets the server switch,
+//!   and some servers always do. A value longer than the
+//!   buffer aborts with 0x05040005 as in a segmented upload; the last
+//!   segment is written only when the end frame says how many of its bytes
+//!   are data, so no padding lands in the buffer. Sub-block confirmation
+//!   and the handling of lost segments follow [`super::block`].
+//! * The timeout runs from the last frame received, and in a download also
+//!   from the last segment of a sub-block sent.
 
 use core::sync::atomic::{AtomicU8, Ordering};
 
+use super::block::{BlockRx, BlockTx, valid_blksize};
+use crate::config::SDO_BLOCKSIZE_UPLOAD;
 use crate::error::{CopKernel, CopResult, SdoAbort};
 use crate::event::{ActionQueue, Event};
 use crate::od::ObjectDictionary;
 use crate::port::{CanFrame, CanId, CanPort, Priority, Ticks};
 use crate::wire::sdo::{
-    ClientFrame, EXPEDITED_MAX, Initiate, Multiplexer, SEGMENT_MAX, SegmentData, ServerFrame,
+    BlockSegment, ClientFrame, EXPEDITED_MAX, Initiate, Multiplexer, SEGMENT_MAX, SegmentData,
+    ServerFrame, SubBlockFrame, block_crc, frame_bytes,
 };
 
 /// First client parameter object.
@@ -27,6 +53,10 @@ pub const CLIENT_BASE_INDEX: u16 = 0x1280;
 pub const CAPACITY: usize = crate::config::SDO_MAX_CLIENT_IN_OBD;
 /// Default transfer timeout in ticks (`SDOC_DEFAULT_TIMEOUT`, 0.5 s).
 pub const DEFAULT_TIMEOUT_TICKS: u32 = 5000;
+/// Protocol switch threshold the client sends in a block upload: 0, no
+/// switch invited. The application asked for block transfer (with its
+/// CRC); a server that switches anyway is followed.
+pub const BLOCK_UPLOAD_PST: u8 = 0;
 
 /// Transfer state (`tSdocState`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -45,13 +75,19 @@ pub enum SdocState {
     Finished = 4,
 }
 
-/// Direction of a transfer (`tSdocType`; block transfers are not offered).
+/// Protocol and direction of a transfer (`tSdocType`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Direction {
-    /// Download (write to the server); expedited when ≤ 4 bytes.
+    /// kSdocTypeSegDown: download (write to the server); expedited when
+    /// ≤ 4 bytes.
     Download,
-    /// Upload (read from the server).
+    /// kSdocTypeSegUp: upload (read from the server).
     Upload,
+    /// kSdocTypeBlockDown: block download.
+    BlockDownload,
+    /// kSdocTypeBlockUp: block upload (the server may switch to the SDO
+    /// upload protocol).
+    BlockUpload,
 }
 
 /// A client channel's parameters (`tSdocParam`).
@@ -71,6 +107,14 @@ pub struct ClientParam {
 enum Phase {
     InitiateSent,
     SegmentSent,
+    /// Block download: sub-blocks go out and are confirmed.
+    BlockDown(BlockTx),
+    /// Block download: end frame sent.
+    BlockDownEnd,
+    /// Block upload: sub-blocks arrive.
+    BlockUp(BlockRx),
+    /// Block upload: the last sub-block is confirmed, the end frame is next.
+    BlockUpEnd(BlockRx),
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -87,6 +131,15 @@ struct Transfer {
     timeout: u32,
     /// Upload: size announced by the server.
     announced: Option<u32>,
+    /// Block transfer: both sides support the CRC.
+    crc: bool,
+    /// Block upload: CRC of the full segments received in order.
+    crc_acc: u16,
+    /// Block upload: the segment with c = 1, kept until the end frame says
+    /// how many of its bytes are data.
+    last_segment: [u8; SEGMENT_MAX],
+    /// Time of the last frame received.
+    last_rx: Ticks,
 }
 
 #[derive(Clone, Copy, Debug, Default)]
@@ -254,7 +307,8 @@ impl SdoClient {
         let (Some(tx), Some(_)) = (cob_id(c.param.tx_cob), cob_id(c.param.rx_cob)) else {
             return Err(CopKernel::SdocInvalidParam);
         };
-        if len > buf.len() || (dir == Direction::Download && len == 0) {
+        let download = matches!(dir, Direction::Download | Direction::BlockDownload);
+        if len > buf.len() || (download && len == 0) {
             return Err(CopKernel::SdocInvalidParam);
         }
         let busy_same_server = self.channels.iter().any(|o| {
@@ -281,9 +335,24 @@ impl SdoClient {
             deadline: now.plus(timeout),
             timeout,
             announced: None,
+            crc: false,
+            crc_acc: 0,
+            last_segment: [0; SEGMENT_MAX],
+            last_rx: now,
         };
         let frame = match dir {
             Direction::Upload => ClientFrame::InitiateUpload { mux },
+            Direction::BlockDownload => ClientFrame::BlockDownloadInitiate {
+                mux,
+                crc: true,
+                size: Some(u32::try_from(len).map_err(|_| CopKernel::SdocInvalidParam)?),
+            },
+            Direction::BlockUpload => ClientFrame::BlockUploadInitiate {
+                mux,
+                crc: true,
+                blksize: SDO_BLOCKSIZE_UPLOAD,
+                pst: BLOCK_UPLOAD_PST,
+            },
             Direction::Download => {
                 let payload = if len <= EXPEDITED_MAX {
                     let mut tmp = [0u8; EXPEDITED_MAX];
@@ -350,48 +419,35 @@ impl SdoClient {
             let Some(mut t) = ch.transfer else {
                 return true; // a late reply to a finished transfer
             };
-            let reply = match ServerFrame::from_can(frame) {
-                Ok(r) => r,
-                Err(_) => {
-                    finish_tx_abort(ch, port, index, t.mux, SdoAbort::UnknownCommand.code(), q);
+            let Ok(bytes) = frame_bytes(frame) else {
+                return true; // not an SDO frame (CiA 301: always 8 bytes)
+            };
+            let step = if let Phase::BlockUp(rx) = t.phase {
+                // Inside a sub-block every frame is a segment (or an abort).
+                match SubBlockFrame::decode(bytes) {
+                    SubBlockFrame::Abort { code, .. } => {
+                        finish_rx_abort(ch, index, code, q);
+                        return true;
+                    }
+                    SubBlockFrame::Segment(seg) => block_upload_segment(&mut t, rx, &seg),
+                }
+            } else {
+                let reply = match ServerFrame::decode(bytes) {
+                    Ok(r) => r,
+                    Err(_) => {
+                        finish_tx_abort(ch, port, index, t.mux, SdoAbort::UnknownCommand.code(), q);
+                        return true;
+                    }
+                };
+                if let ServerFrame::Abort { code, .. } = reply {
+                    finish_rx_abort(ch, index, code, q);
                     return true;
                 }
-            };
-            if let ServerFrame::Abort { code, .. } = reply {
-                ch.transfer = None;
-                ch.state = SdocState::RxAborted;
-                ch.abort = code;
-                q.emit(Event::SdocFinished {
-                    client: index,
-                    state: SdocState::RxAborted as u8,
-                    abort: code,
-                });
-                return true;
-            }
-            let Some(tx) = cob_id(ch.param.tx_cob) else {
-                return true;
+                step(&mut t, reply)
             };
             t.deadline = now.plus(t.timeout);
-            match step(&mut t, reply) {
-                Step::Send(f) => {
-                    if port.send(&f.to_can(tx), Priority::Low).is_err() {
-                        finish_tx_abort(ch, port, index, t.mux, SdoAbort::General.code(), q);
-                    } else {
-                        ch.transfer = Some(t);
-                    }
-                }
-                Step::Done => {
-                    ch.transfer = None;
-                    ch.state = SdocState::Finished;
-                    ch.transferred = t.offset as u32;
-                    q.emit(Event::SdocFinished {
-                        client: index,
-                        state: SdocState::Finished as u8,
-                        abort: 0,
-                    });
-                }
-                Step::Abort(code) => finish_tx_abort(ch, port, index, t.mux, code, q),
-            }
+            t.last_rx = now;
+            apply(ch, port, index, t, step, now, q);
             return true;
         }
         false
@@ -401,13 +457,15 @@ impl SdoClient {
     /// call. Returns `true` when nothing timed out.
     pub fn poll(&mut self, port: &mut impl CanPort, now: Ticks, q: &mut ActionQueue) -> bool {
         for (n, ch) in self.channels.iter_mut().enumerate() {
+            let index = CLIENT_BASE_INDEX + n as u16;
             if let Some(t) = ch.transfer {
                 if now.is_after(t.deadline) {
-                    let index = CLIENT_BASE_INDEX + n as u16;
                     finish_tx_abort(ch, port, index, t.mux, SdoAbort::Timeout.code(), q);
                     return false;
                 }
             }
+            send_block_segments(ch, port, now);
+            confirm_stalled_sub_block(ch, port, index, now, q);
         }
         true
     }
@@ -444,6 +502,114 @@ fn finish_tx_abort(
     });
 }
 
+/// The server aborted the transfer.
+fn finish_rx_abort(ch: &mut Channel, index: u16, code: u32, q: &mut ActionQueue) {
+    ch.transfer = None;
+    ch.state = SdocState::RxAborted;
+    ch.abort = code;
+    q.emit(Event::SdocFinished {
+        client: index,
+        state: SdocState::RxAborted as u8,
+        abort: code,
+    });
+}
+
+/// Carries out the outcome of a received frame for transfer `t`.
+fn apply(
+    ch: &mut Channel,
+    port: &mut impl CanPort,
+    index: u16,
+    t: Transfer,
+    step: Step,
+    now: Ticks,
+    q: &mut ActionQueue,
+) {
+    let Some(tx) = cob_id(ch.param.tx_cob) else {
+        return;
+    };
+    match step {
+        Step::Send(f) => {
+            if port.send(&f.to_can(tx), Priority::Low).is_err() {
+                finish_tx_abort(ch, port, index, t.mux, SdoAbort::General.code(), q);
+            } else {
+                ch.transfer = Some(t);
+            }
+        }
+        Step::Wait => {
+            ch.transfer = Some(t);
+            send_block_segments(ch, port, now);
+        }
+        Step::Done(last) => {
+            if let Some(f) = last {
+                // The server has what it needs; its confirmation is best
+                // effort (a lost one only makes the server time out).
+                let _ = port.send(&f.to_can(tx), Priority::Low);
+            }
+            ch.transfer = None;
+            ch.state = SdocState::Finished;
+            ch.transferred = t.offset as u32;
+            q.emit(Event::SdocFinished {
+                client: index,
+                state: SdocState::Finished as u8,
+                abort: 0,
+            });
+        }
+        Step::Abort(code) => finish_tx_abort(ch, port, index, t.mux, code, q),
+    }
+}
+
+/// Hands the segments of a block download's sub-block to the driver until
+/// it refuses one; the rest goes from [`SdoClient::poll`].
+fn send_block_segments(ch: &mut Channel, port: &mut impl CanPort, now: Ticks) {
+    let (Some(mut t), Some(id)) = (ch.transfer, cob_id(ch.param.tx_cob)) else {
+        return;
+    };
+    let Phase::BlockDown(mut btx) = t.phase else {
+        return;
+    };
+    while let Some(p) = btx.next() {
+        let mut tmp = [0u8; SEGMENT_MAX];
+        let chunk = tmp
+            .get_mut(..p.end.saturating_sub(p.start))
+            .unwrap_or(&mut []);
+        load(t.buf, p.start, chunk);
+        let seg = BlockTx::segment(&p, chunk);
+        if port.send(&seg.to_can(id), Priority::Low).is_err() {
+            break;
+        }
+        btx.mark_sent(&p, chunk);
+        if btx.next().is_none() {
+            // The confirmation is due from here on.
+            t.deadline = now.plus(t.timeout);
+        }
+    }
+    t.phase = Phase::BlockDown(btx);
+    ch.transfer = Some(t);
+}
+
+/// Confirms a block upload's sub-block whose last segment did not come,
+/// half a timeout after the last segment (see [`super::block`]).
+fn confirm_stalled_sub_block(
+    ch: &mut Channel,
+    port: &mut impl CanPort,
+    index: u16,
+    now: Ticks,
+    q: &mut ActionQueue,
+) {
+    let Some(mut t) = ch.transfer else {
+        return;
+    };
+    let Phase::BlockUp(rx) = t.phase else {
+        return;
+    };
+    if !rx.stalled() || now.since(t.last_rx) < t.timeout / 2 {
+        return;
+    }
+    let step = confirm_upload_sub_block(&mut t, rx);
+    t.last_rx = now;
+    apply(ch, port, index, t, step, now, q);
+}
+
 fn load(buf: &[AtomicU8], from: usize, out: &mut [u8]) {
     for (o, b) in out.iter_mut().zip(buf.iter().skip(from)) {
         *o = b.load(Ordering::Relaxed);
@@ -463,8 +629,14 @@ fn store(buf: &[AtomicU8], at: usize, data: &[u8]) -> bool {
 }
 
 enum Step {
+    /// Send this frame; the transfer goes on.
     Send(ClientFrame),
-    Done,
+    /// Nothing to answer (a block download's segments follow, or more
+    /// segments of a sub-block are expected).
+    Wait,
+    /// The transfer is complete; send the frame, if any, to close it.
+    Done(Option<ClientFrame>),
+    /// Abort with this code.
     Abort(u32),
 }
 
@@ -498,7 +670,7 @@ fn step(t: &mut Transfer, reply: ServerFrame) -> Step {
                 return Step::Abort(general);
             }
             if t.offset >= t.len {
-                Step::Done // expedited: the data went with the request
+                Step::Done(None) // expedited: the data went with the request
             } else {
                 next_download_segment(t)
             }
@@ -513,7 +685,7 @@ fn step(t: &mut Transfer, reply: ServerFrame) -> Step {
             }
             t.toggle = !t.toggle;
             if t.offset >= t.len {
-                Step::Done
+                Step::Done(None)
             } else {
                 next_download_segment(t)
             }
@@ -533,7 +705,7 @@ fn step(t: &mut Transfer, reply: ServerFrame) -> Step {
                         return Step::Abort(SdoAbort::OutOfMemory.code());
                     }
                     t.offset = d.len();
-                    Step::Done
+                    Step::Done(None)
                 }
                 Initiate::Segmented { size } => {
                     if size.is_some_and(|s| s as usize > t.len) {
@@ -563,11 +735,157 @@ fn step(t: &mut Transfer, reply: ServerFrame) -> Step {
                 if t.announced.is_some_and(|s| s as usize != t.offset) {
                     return Step::Abort(SdoAbort::LengthMismatch.code());
                 }
-                Step::Done
+                Step::Done(None)
             } else {
                 Step::Send(ClientFrame::UploadSegment { toggle: t.toggle })
             }
         }
-        _ => Step::Abort(command),
+        (
+            Direction::BlockUpload,
+            Phase::InitiateSent,
+            ServerFrame::InitiateUploadResponse { .. },
+        ) => {
+            // Protocol switch: the server answers with the SDO upload
+            // protocol; the transfer continues as one.
+            t.dir = Direction::Upload;
+            step(t, reply)
+        }
+        (dir, phase, reply) => block_step(t, dir, phase, reply).unwrap_or(Step::Abort(command)),
     }
+}
+
+/// The block transfer part of [`step`]; `None` for a reply that does not
+/// belong to the transfer.
+fn block_step(t: &mut Transfer, dir: Direction, phase: Phase, reply: ServerFrame) -> Option<Step> {
+    Some(match (dir, phase, reply) {
+        (
+            Direction::BlockDownload,
+            Phase::InitiateSent,
+            ServerFrame::BlockDownloadInitiateResponse { mux, crc, blksize },
+        ) => {
+            if mux != t.mux {
+                return Some(Step::Abort(SdoAbort::General.code()));
+            }
+            if !valid_blksize(blksize) {
+                return Some(Step::Abort(SdoAbort::InvalidBlockSize.code()));
+            }
+            t.crc = crc;
+            t.phase = Phase::BlockDown(BlockTx::new(t.len, blksize));
+            Step::Wait
+        }
+        (
+            Direction::BlockDownload,
+            Phase::BlockDown(mut btx),
+            ServerFrame::BlockDownloadAck { ackseq, blksize },
+        ) => match btx.on_ack(ackseq, blksize) {
+            Err(code) => Step::Abort(code.code()),
+            Ok(false) => {
+                t.phase = Phase::BlockDown(btx);
+                Step::Wait
+            }
+            Ok(true) => {
+                t.phase = Phase::BlockDownEnd;
+                Step::Send(ClientFrame::BlockDownloadEnd {
+                    unused: btx.unused(),
+                    crc: if t.crc { btx.crc() } else { 0 },
+                })
+            }
+        },
+        (Direction::BlockDownload, Phase::BlockDownEnd, ServerFrame::BlockDownloadEndResponse) => {
+            t.offset = t.len;
+            Step::Done(None)
+        }
+        (
+            Direction::BlockUpload,
+            Phase::InitiateSent,
+            ServerFrame::BlockUploadInitiateResponse { mux, crc, size },
+        ) => {
+            if mux != t.mux {
+                return Some(Step::Abort(SdoAbort::General.code()));
+            }
+            if size.is_some_and(|s| s as usize > t.len) {
+                return Some(Step::Abort(SdoAbort::OutOfMemory.code()));
+            }
+            t.announced = size;
+            t.crc = crc;
+            t.phase = Phase::BlockUp(BlockRx::new(SDO_BLOCKSIZE_UPLOAD));
+            Step::Send(ClientFrame::BlockUploadStart)
+        }
+        (
+            Direction::BlockUpload,
+            Phase::BlockUpEnd(rx),
+            ServerFrame::BlockUploadEnd { unused, crc },
+        ) => block_upload_end(t, rx, unused, crc),
+        _ => return None,
+    })
+}
+
+/// A segment of a block upload (`rx` is the sub-block state before it).
+fn block_upload_segment(t: &mut Transfer, mut rx: BlockRx, seg: &BlockSegment) -> Step {
+    let verdict = match rx.on_segment(seg) {
+        Ok(v) => v,
+        Err(code) => return Step::Abort(code.code()),
+    };
+    if let Some(index) = verdict.accept {
+        let start = index.saturating_mul(SEGMENT_MAX);
+        if index > 0 && start >= t.len {
+            return Step::Abort(SdoAbort::OutOfMemory.code());
+        }
+        if index > 0 && t.announced.is_some_and(|s| start >= s as usize) {
+            return Step::Abort(SdoAbort::LengthMismatch.code());
+        }
+        if seg.last {
+            t.last_segment = seg.data;
+        } else {
+            // Only the last segment may carry padding: this one is data.
+            if start.saturating_add(SEGMENT_MAX) > t.len || !store(t.buf, start, &seg.data) {
+                return Step::Abort(SdoAbort::OutOfMemory.code());
+            }
+            t.crc_acc = block_crc(t.crc_acc, &seg.data);
+            t.offset = start.saturating_add(SEGMENT_MAX);
+        }
+    }
+    t.phase = Phase::BlockUp(rx);
+    if verdict.confirm {
+        confirm_upload_sub_block(t, rx)
+    } else {
+        Step::Wait
+    }
+}
+
+/// Confirms the running sub-block of a block upload.
+fn confirm_upload_sub_block(t: &mut Transfer, mut rx: BlockRx) -> Step {
+    let ackseq = rx.confirm(SDO_BLOCKSIZE_UPLOAD);
+    t.phase = if rx.complete() {
+        Phase::BlockUpEnd(rx)
+    } else {
+        Phase::BlockUp(rx)
+    };
+    Step::Send(ClientFrame::BlockUploadAck {
+        ackseq,
+        blksize: SDO_BLOCKSIZE_UPLOAD,
+    })
+}
+
+/// The end frame of a block upload: writes the data bytes of the last
+/// segment, checks length and CRC.
+fn block_upload_end(t: &mut Transfer, rx: BlockRx, unused: u8, crc: u16) -> Step {
+    let padded = rx.segments().saturating_mul(SEGMENT_MAX);
+    let len = padded.saturating_sub(usize::from(unused));
+    let last_start = padded.saturating_sub(SEGMENT_MAX);
+    let tail = t
+        .last_segment
+        .get(..len.saturating_sub(last_start))
+        .unwrap_or(&[]);
+    if len > t.len || !store(t.buf, last_start, tail) {
+        return Step::Abort(SdoAbort::OutOfMemory.code());
+    }
+    if t.announced.is_some_and(|s| s as usize != len) {
+        return Step::Abort(SdoAbort::LengthMismatch.code());
+    }
+    if t.crc && block_crc(t.crc_acc, tail) != crc {
+        return Step::Abort(SdoAbort::CrcError.code());
+    }
+    t.offset = len;
+    Step::Done(Some(ClientFrame::BlockUploadEndResponse))
 }

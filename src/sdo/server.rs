@@ -1,6 +1,5 @@
-//! The default SDO server (CiA 301 SDO protocols, object 0x1200): expedited and
-//! segmented upload and download. Block transfer is not implemented and is
-//! refused with abort 0x05040001.
+//! The default SDO server (CiA 301 SDO protocols, object 0x1200): expedited,
+//! segmented and block upload and download.
 //!
 //! # Data consistency
 //! The server owns one transfer buffer of [`SDOS_BUFFER_SIZE`] bytes.
@@ -17,16 +16,21 @@
 //!   applies to the complete value. A value longer than the buffer is
 //!   refused with abort 0x06070012: at the initiate request when the client
 //!   states the size, otherwise at the segment that would overflow.
+//! * Block transfer follows the same two rules: a block upload sends its
+//!   sub-blocks from the snapshot, a block download collects the sub-blocks
+//!   and writes once when the end frame has been checked (size, CRC).
 //!
 //! # Abort codes
 //! Everything about the object (existence, access, length, range, refusals
 //! by a module or the application) is the dictionary's [`OdError::abort`],
 //! passed through unchanged. The server itself decides only the protocol
 //! codes: toggle bit (0x05030000), timeout (0x05040000), unknown or
-//! unexpected command (0x05040001), upload too large for the buffer
-//! (0x05040005), download longer than the buffer (0x06070012) and a
-//! segmented download whose data length differs from the size stated at
-//! initiate (0x06070010).
+//! unexpected command (0x05040001), block size outside 1..=127
+//! (0x05040002), sequence number 0, above the block size or beyond what was
+//! sent (0x05040003), CRC of a block download (0x05040004), upload too
+//! large for the buffer (0x05040005), download longer than the buffer
+//! (0x06070012) and a download whose data length differs from the size
+//! stated at initiate (0x06070010).
 //!
 //! # Protocol decisions
 //! * Frames with a data length other than 8, and remote frames, are not SDO
@@ -48,9 +52,29 @@
 //!   all 4.
 //! * Timeout supervision: a transfer is aborted with 0x05040000 once
 //!   [`SdoServer::timeout_ticks`] ticks pass without a valid request of the
-//!   transfer. The check runs in [`SdoServer::poll`] and also when the late
+//!   transfer (in a block upload: since the last segment of a sub-block
+//!   went out). The check runs in [`SdoServer::poll`] and also when the late
 //!   request arrives, so the outcome does not depend on the order of the
 //!   two.
+//!
+//! # Block transfer
+//! * Block download: the server offers [`SDO_BLOCKSIZE_DOWNLOAD`] segments
+//!   per sub-block and the CRC (it is used when the client supports it
+//!   too). Sub-block bookkeeping, confirmation and retransmission follow
+//!   [`super::block`]: a lost segment is asked for again through ackseq; a
+//!   lost last segment of a sub-block is confirmed after half the timeout
+//!   without segments.
+//! * Block upload: the client's blksize is used as given (1..=127, else
+//!   0x05040002). When the client allows a protocol switch (pst > 0) and
+//!   the value has at most pst bytes, the server answers with the SDO
+//!   upload protocol instead (expedited up to 4 bytes, else segmented), as
+//!   CiA 301 allows. The segments of a sub-block are not answers to one
+//!   request each: the stack takes them with [`SdoServer::pending_segment`]
+//!   while the driver accepts frames and confirms each with
+//!   [`SdoServer::segment_sent`]; the rest follows in the next cycle.
+//! * While a sub-block of a download runs, every frame is a segment (CiA
+//!   301 gives segments no command specifier); only 0x80 in byte 0 (seqno
+//!   0 with c = 1, never a valid segment) is read as the client's abort.
 //!
 //! # COB-IDs
 //! Object 0x1200 sub 1 (client to server) and sub 2 (server to client) when
@@ -61,13 +85,15 @@
 //! disables the server (CiA 301 object 1200h: both COB-IDs must be valid); so
 //! does an 11-bit COB-ID with bits 28..11 set.
 
-use crate::config::{SDOS_BUFFER_SIZE, SDOS_DEFAULT_TIMEOUT};
+use super::block::{BlockRx, BlockTx, valid_blksize};
+use crate::config::{SDO_BLOCKSIZE_DOWNLOAD, SDOS_BUFFER_SIZE, SDOS_DEFAULT_TIMEOUT};
 use crate::error::{OdError, SdoAbort};
 use crate::od::{ByteOrder, ObjectDictionary, WriteHooks};
 use crate::port::{CanFrame, CanId, Ticks};
 use crate::wire::sdo::{
-    ClientFrame, DecodeError, EXPEDITED_MAX, ExpeditedData, Initiate, Multiplexer, REQUEST_BASE,
-    RESPONSE_BASE, SEGMENT_MAX, SegmentData, ServerFrame,
+    BlockSegment, ClientFrame, DecodeError, EXPEDITED_MAX, ExpeditedData, Initiate, Multiplexer,
+    REQUEST_BASE, RESPONSE_BASE, SEGMENT_MAX, SegmentData, ServerFrame, SubBlockFrame, block_crc,
+    frame_bytes,
 };
 
 /// SDO server parameter object of the default server.
@@ -101,12 +127,62 @@ struct Download {
     last_rx: Ticks,
 }
 
+/// Where a block download stands.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum BlockDownPhase {
+    /// Sub-blocks arrive: every frame is a segment.
+    SubBlock,
+    /// The last segment is confirmed: the end frame is next.
+    End,
+}
+
+/// A block download: segments collected in the buffer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct BlockDownload {
+    mux: Multiplexer,
+    /// Size stated by the client at initiate.
+    size: Option<usize>,
+    /// Both sides support the CRC.
+    crc: bool,
+    rx: BlockRx,
+    phase: BlockDownPhase,
+    /// CRC of the full segments received in order (the last one, whose
+    /// length the end frame tells, is added then).
+    crc_acc: u16,
+    last_rx: Ticks,
+}
+
+/// Where a block upload stands.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum BlockUpPhase {
+    /// Initiate answered, the client's start request is next.
+    Start,
+    /// Sub-blocks go out and are confirmed.
+    SubBlock,
+    /// End frame sent, the client's end response is next.
+    End,
+}
+
+/// A block upload of `len` bytes of the buffer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct BlockUpload {
+    mux: Multiplexer,
+    len: usize,
+    /// Both sides support the CRC.
+    crc: bool,
+    tx: BlockTx,
+    phase: BlockUpPhase,
+    last_rx: Ticks,
+}
+
 /// The transfer in progress.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Transfer {
     Idle,
     Upload(Upload),
     Download(Download),
+    BlockDown(BlockDownload),
+    BlockUp(BlockUpload),
 }
 
 impl Transfer {
@@ -115,6 +191,8 @@ impl Transfer {
             Transfer::Idle => None,
             Transfer::Upload(u) => Some(u.mux),
             Transfer::Download(d) => Some(d.mux),
+            Transfer::BlockDown(d) => Some(d.mux),
+            Transfer::BlockUp(u) => Some(u.mux),
         }
     }
 
@@ -123,7 +201,23 @@ impl Transfer {
             Transfer::Idle => None,
             Transfer::Upload(u) => Some(u.last_rx),
             Transfer::Download(d) => Some(d.last_rx),
+            Transfer::BlockDown(d) => Some(d.last_rx),
+            Transfer::BlockUp(u) => Some(u.last_rx),
         }
+    }
+
+    /// True for the requests that continue the running transfer (rather
+    /// than start a new one).
+    fn continued_by(&self, req: &ClientFrame) -> bool {
+        matches!(
+            req,
+            ClientFrame::DownloadSegment { .. }
+                | ClientFrame::UploadSegment { .. }
+                | ClientFrame::BlockDownloadEnd { .. }
+                | ClientFrame::BlockUploadStart
+                | ClientFrame::BlockUploadAck { .. }
+                | ClientFrame::BlockUploadEndResponse
+        )
     }
 }
 
@@ -197,7 +291,7 @@ impl SdoServer {
         self.timeout_ticks = ticks;
     }
 
-    /// True while a segmented transfer runs.
+    /// True while a segmented or block transfer runs.
     pub fn is_busy(&self) -> bool {
         self.transfer != Transfer::Idle
     }
@@ -217,18 +311,37 @@ impl SdoServer {
             return None;
         }
         let tx = self.tx?;
-        let reply = match ClientFrame::from_can(frame) {
-            Ok(req) => {
-                if let (ClientFrame::Abort { code, .. }, Some(mux)) = (req, self.transfer.mux()) {
-                    // The client aborts the running transfer.
-                    od.notify_sdo_abort(mux.index, mux.sub, code);
+        let reply = if let Transfer::BlockDown(
+            d @ BlockDownload {
+                phase: BlockDownPhase::SubBlock,
+                ..
+            },
+        ) = self.transfer
+        {
+            let bytes = frame_bytes(frame).ok()?;
+            match SubBlockFrame::decode(bytes) {
+                SubBlockFrame::Abort { code, .. } => {
+                    od.notify_sdo_abort(d.mux.index, d.mux.sub, code);
+                    self.transfer = Transfer::Idle;
+                    None
                 }
-                self.handle(od, hooks, req, now)
+                SubBlockFrame::Segment(seg) => self.block_download_segment(d, &seg, now),
             }
-            Err(DecodeError::Length) => None,
-            Err(DecodeError::UnsupportedCommand { mux, .. }) => {
-                let mux = self.transfer.mux().unwrap_or(mux);
-                Some(self.abort(mux, SdoAbort::UnknownCommand.code()))
+        } else {
+            match ClientFrame::from_can(frame) {
+                Ok(req) => {
+                    if let (ClientFrame::Abort { code, .. }, Some(mux)) = (req, self.transfer.mux())
+                    {
+                        // The client aborts the running transfer.
+                        od.notify_sdo_abort(mux.index, mux.sub, code);
+                    }
+                    self.handle(od, hooks, req, now)
+                }
+                Err(DecodeError::Length) => None,
+                Err(DecodeError::UnsupportedCommand { mux, .. }) => {
+                    let mux = self.transfer.mux().unwrap_or(mux);
+                    Some(self.abort(mux, SdoAbort::UnknownCommand.code()))
+                }
             }
         };
         if let Some(ServerFrame::Abort { mux, code }) = reply {
@@ -241,13 +354,46 @@ impl SdoServer {
     /// running transfer timed out (the object's callback sees
     /// kObdEvAbortSdo).
     pub fn poll(&mut self, od: &ObjectDictionary, now: Ticks) -> Option<CanFrame> {
+        let tx = self.tx?;
         if !self.expired(now) {
-            return None;
+            return self.stalled_sub_block(now).map(|r| r.to_can(tx));
         }
         let mux = self.transfer.mux()?;
-        let tx = self.tx?;
         od.notify_sdo_abort(mux.index, mux.sub, SdoAbort::Timeout.code());
         Some(self.abort(mux, SdoAbort::Timeout.code()).to_can(tx))
+    }
+
+    /// The next segment of a block upload waiting for the driver; the
+    /// stack sends it and then calls [`SdoServer::segment_sent`]. `None`
+    /// when no sub-block is being sent.
+    pub fn pending_segment(&self) -> Option<CanFrame> {
+        let Transfer::BlockUp(u) = self.transfer else {
+            return None;
+        };
+        if u.phase != BlockUpPhase::SubBlock {
+            return None;
+        }
+        let p = u.tx.next()?;
+        let data = self.buf.get(p.start..p.end)?;
+        Some(BlockTx::segment(&p, data).to_can(self.tx?))
+    }
+
+    /// The segment of [`SdoServer::pending_segment`] went to the driver.
+    /// The timeout of the confirmation runs from the last segment of a
+    /// sub-block.
+    pub fn segment_sent(&mut self, now: Ticks) {
+        let Transfer::BlockUp(mut u) = self.transfer else {
+            return;
+        };
+        let Some(p) = u.tx.next() else {
+            return;
+        };
+        let data = self.buf.get(p.start..p.end).unwrap_or(&[]);
+        u.tx.mark_sent(&p, data);
+        if u.tx.next().is_none() {
+            u.last_rx = now;
+        }
+        self.transfer = Transfer::BlockUp(u);
     }
 
     /// Drops a running transfer without answering (NMT stopped or reset).
@@ -279,10 +425,7 @@ impl SdoServer {
             self.transfer = Transfer::Idle;
             return None;
         }
-        let continues = matches!(
-            req,
-            ClientFrame::DownloadSegment { .. } | ClientFrame::UploadSegment { .. }
-        );
+        let continues = self.transfer.continued_by(&req);
         if self.expired(now) {
             if let Some(mux) = self.transfer.mux() {
                 if continues {
@@ -312,6 +455,62 @@ impl SdoServer {
                 };
                 Some(self.download_segment(od, hooks, down, toggle, &data, last))
             }
+            (Transfer::Idle, ClientFrame::BlockDownloadInitiate { mux, crc, size }) => {
+                Some(self.block_download_initiate(od, mux, crc, size, now))
+            }
+            (
+                Transfer::BlockDown(
+                    d @ BlockDownload {
+                        phase: BlockDownPhase::End,
+                        ..
+                    },
+                ),
+                ClientFrame::BlockDownloadEnd { unused, crc },
+            ) => Some(self.block_download_end(od, hooks, d, unused, crc)),
+            (
+                Transfer::Idle,
+                ClientFrame::BlockUploadInitiate {
+                    mux,
+                    crc,
+                    blksize,
+                    pst,
+                },
+            ) => Some(self.block_upload_initiate(od, mux, crc, blksize, pst, now)),
+            (
+                Transfer::BlockUp(
+                    u @ BlockUpload {
+                        phase: BlockUpPhase::Start,
+                        ..
+                    },
+                ),
+                ClientFrame::BlockUploadStart,
+            ) => {
+                self.transfer = Transfer::BlockUp(BlockUpload {
+                    phase: BlockUpPhase::SubBlock,
+                    last_rx: now,
+                    ..u
+                });
+                None
+            }
+            (
+                Transfer::BlockUp(
+                    u @ BlockUpload {
+                        phase: BlockUpPhase::SubBlock,
+                        ..
+                    },
+                ),
+                ClientFrame::BlockUploadAck { ackseq, blksize },
+            ) => self.block_upload_ack(u, ackseq, blksize, now),
+            (
+                Transfer::BlockUp(BlockUpload {
+                    phase: BlockUpPhase::End,
+                    ..
+                }),
+                ClientFrame::BlockUploadEndResponse,
+            ) => {
+                self.transfer = Transfer::Idle;
+                None
+            }
             (running, _) => {
                 let mux = running.mux().unwrap_or_default();
                 Some(self.abort(mux, SdoAbort::UnknownCommand.code()))
@@ -325,17 +524,26 @@ impl SdoServer {
         mux: Multiplexer,
         now: Ticks,
     ) -> ServerFrame {
-        let len = match od.read(mux.index, mux.sub, ByteOrder::Wire, &mut self.buf) {
-            Ok(n) => n,
-            Err(e) => {
-                let code = if self.exceeds_buffer(od, mux, e) {
+        match self.snapshot(od, mux) {
+            Ok(len) => self.upload_response(mux, len, now),
+            Err(code) => self.abort(mux, code),
+        }
+    }
+
+    /// Reads the value into the buffer; its length, or the abort code.
+    fn snapshot(&mut self, od: &ObjectDictionary, mux: Multiplexer) -> Result<usize, u32> {
+        od.read(mux.index, mux.sub, ByteOrder::Wire, &mut self.buf)
+            .map_err(|e| {
+                if self.exceeds_buffer(od, mux, e) {
                     SdoAbort::OutOfMemory.code()
                 } else {
                     e.abort
-                };
-                return self.abort(mux, code);
-            }
-        };
+                }
+            })
+    }
+
+    /// The SDO upload protocol's answer for `len` bytes in the buffer.
+    fn upload_response(&mut self, mux: Multiplexer, len: usize, now: Ticks) -> ServerFrame {
         if (1..=EXPEDITED_MAX).contains(&len) {
             let data = self
                 .buf
@@ -474,6 +682,214 @@ impl SdoServer {
             // The last segment is confirmed only once the value is stored.
             Ok(()) => ServerFrame::DownloadSegmentResponse { toggle },
             Err(e) => self.abort(mux, e.abort),
+        }
+    }
+}
+
+impl SdoServer {
+    fn block_download_initiate(
+        &mut self,
+        od: &ObjectDictionary,
+        mux: Multiplexer,
+        crc: bool,
+        size: Option<u32>,
+        now: Ticks,
+    ) -> ServerFrame {
+        let size = size.map(|s| usize::try_from(s).unwrap_or(usize::MAX));
+        if let Err(e) = od.begin_write(mux.index, mux.sub, size) {
+            return self.abort(mux, e.abort);
+        }
+        if size.is_some_and(|s| s > self.buf.len()) {
+            return self.abort(mux, SdoAbort::LengthTooHigh.code());
+        }
+        self.transfer = Transfer::BlockDown(BlockDownload {
+            mux,
+            size,
+            crc,
+            rx: BlockRx::new(SDO_BLOCKSIZE_DOWNLOAD),
+            phase: BlockDownPhase::SubBlock,
+            crc_acc: 0,
+            last_rx: now,
+        });
+        ServerFrame::BlockDownloadInitiateResponse {
+            mux,
+            crc: true,
+            blksize: SDO_BLOCKSIZE_DOWNLOAD,
+        }
+    }
+
+    /// A segment of a block download (`d` is the transfer before it).
+    fn block_download_segment(
+        &mut self,
+        mut d: BlockDownload,
+        seg: &BlockSegment,
+        now: Ticks,
+    ) -> Option<ServerFrame> {
+        if self.expired(now) {
+            return Some(self.abort(d.mux, SdoAbort::Timeout.code()));
+        }
+        d.last_rx = now;
+        let verdict = match d.rx.on_segment(seg) {
+            Ok(v) => v,
+            Err(code) => return Some(self.abort(d.mux, code.code())),
+        };
+        if let Some(index) = verdict.accept {
+            let start = index.saturating_mul(SEGMENT_MAX);
+            if index > 0 && start >= self.buf.len() {
+                return Some(self.abort(d.mux, SdoAbort::LengthTooHigh.code()));
+            }
+            if index > 0 && d.size.is_some_and(|s| start >= s) {
+                return Some(self.abort(d.mux, SdoAbort::LengthMismatch.code()));
+            }
+            // The padding of the last segment may not fit: only the bytes
+            // the end frame declares as data have to.
+            let room = self.buf.len().saturating_sub(start).min(SEGMENT_MAX);
+            let src = seg.data.get(..room).unwrap_or(&[]);
+            if let Some(dst) = self.buf.get_mut(start..start.saturating_add(room)) {
+                dst.copy_from_slice(src);
+            }
+            if !seg.last {
+                d.crc_acc = block_crc(d.crc_acc, &seg.data);
+            }
+        }
+        self.transfer = Transfer::BlockDown(d);
+        if verdict.confirm {
+            return Some(self.confirm_sub_block(d));
+        }
+        None
+    }
+
+    /// Confirms the running sub-block of `d` (ackseq = last segment in
+    /// order) and opens the next one.
+    fn confirm_sub_block(&mut self, mut d: BlockDownload) -> ServerFrame {
+        let ackseq = d.rx.confirm(SDO_BLOCKSIZE_DOWNLOAD);
+        if d.rx.complete() {
+            d.phase = BlockDownPhase::End;
+        }
+        self.transfer = Transfer::BlockDown(d);
+        ServerFrame::BlockDownloadAck {
+            ackseq,
+            blksize: SDO_BLOCKSIZE_DOWNLOAD,
+        }
+    }
+
+    /// The confirmation of a sub-block whose last segment did not come
+    /// (see [`super::block`]): due half a timeout after the last segment.
+    fn stalled_sub_block(&mut self, now: Ticks) -> Option<ServerFrame> {
+        let Transfer::BlockDown(d) = self.transfer else {
+            return None;
+        };
+        let half = self.timeout_ticks / 2;
+        if d.phase != BlockDownPhase::SubBlock
+            || !d.rx.stalled()
+            || half == 0
+            || now.since(d.last_rx) < half
+        {
+            return None;
+        }
+        Some(self.confirm_sub_block(BlockDownload { last_rx: now, ..d }))
+    }
+
+    /// The end frame of a block download: checks length and CRC, then
+    /// writes the value with one dictionary write.
+    fn block_download_end(
+        &mut self,
+        od: &ObjectDictionary,
+        hooks: &mut impl WriteHooks,
+        d: BlockDownload,
+        unused: u8,
+        crc: u16,
+    ) -> ServerFrame {
+        let mux = d.mux;
+        let padded = d.rx.segments().saturating_mul(SEGMENT_MAX);
+        let len = padded.saturating_sub(usize::from(unused));
+        if len > self.buf.len() {
+            return self.abort(mux, SdoAbort::LengthTooHigh.code());
+        }
+        if d.size.is_some_and(|s| s != len) {
+            return self.abort(mux, SdoAbort::LengthMismatch.code());
+        }
+        let last_start = padded.saturating_sub(SEGMENT_MAX);
+        let tail = self.buf.get(last_start..len).unwrap_or(&[]);
+        if d.crc && block_crc(d.crc_acc, tail) != crc {
+            return self.abort(mux, SdoAbort::CrcError.code());
+        }
+        self.transfer = Transfer::Idle;
+        let value = self.buf.get(..len).unwrap_or(&[]);
+        match od.write(mux.index, mux.sub, ByteOrder::Wire, value, hooks) {
+            // Confirmed only once the value is stored.
+            Ok(()) => ServerFrame::BlockDownloadEndResponse,
+            Err(e) => self.abort(mux, e.abort),
+        }
+    }
+
+    fn block_upload_initiate(
+        &mut self,
+        od: &ObjectDictionary,
+        mux: Multiplexer,
+        crc: bool,
+        blksize: u8,
+        pst: u8,
+        now: Ticks,
+    ) -> ServerFrame {
+        if !valid_blksize(blksize) {
+            return self.abort(mux, SdoAbort::InvalidBlockSize.code());
+        }
+        let len = match self.snapshot(od, mux) {
+            Ok(n) => n,
+            Err(code) => return self.abort(mux, code),
+        };
+        if pst > 0 && len <= usize::from(pst) {
+            // Protocol switch (CiA 301): the SDO upload protocol is cheaper
+            // for a value this short.
+            return self.upload_response(mux, len, now);
+        }
+        self.transfer = Transfer::BlockUp(BlockUpload {
+            mux,
+            len,
+            crc,
+            tx: BlockTx::new(len, blksize),
+            phase: BlockUpPhase::Start,
+            last_rx: now,
+        });
+        ServerFrame::BlockUploadInitiateResponse {
+            mux,
+            crc: true,
+            size: u32::try_from(len).ok(),
+        }
+    }
+
+    /// The client's confirmation of a sub-block: the next sub-block goes
+    /// out (through [`SdoServer::pending_segment`]), or the end frame.
+    fn block_upload_ack(
+        &mut self,
+        mut u: BlockUpload,
+        ackseq: u8,
+        blksize: u8,
+        now: Ticks,
+    ) -> Option<ServerFrame> {
+        u.last_rx = now;
+        match u.tx.on_ack(ackseq, blksize) {
+            Err(code) => Some(self.abort(u.mux, code.code())),
+            Ok(false) => {
+                self.transfer = Transfer::BlockUp(u);
+                None
+            }
+            Ok(true) => {
+                u.phase = BlockUpPhase::End;
+                self.transfer = Transfer::BlockUp(u);
+                let crc = if u.crc {
+                    // Every byte went out at least once, so the sender's
+                    // running CRC covers the whole value.
+                    u.tx.crc()
+                } else {
+                    0
+                };
+                Some(ServerFrame::BlockUploadEnd {
+                    unused: u.tx.unused(),
+                    crc,
+                })
+            }
         }
     }
 }

@@ -587,7 +587,7 @@ fn unexpected_requests_abort_the_running_transfer() {
 }
 
 #[test]
-fn segment_without_transfer_and_block_requests_are_unknown_commands() {
+fn segment_without_transfer_and_block_initiate_while_busy_are_unknown_commands() {
     let mut rig = Rig::new(test_od!());
     // No transfer: the multiplexer is 0000h/00h (segments carry none).
     assert_eq!(
@@ -598,10 +598,11 @@ fn segment_without_transfer_and_block_requests_are_unknown_commands() {
         rig.req([0x00, 1, 2, 3, 4, 5, 6, 7]),
         Some(abort_bytes(0, 0, SdoAbort::UnknownCommand))
     );
-    // Block upload initiate (CiA 301 SDO block upload protocol, ccs = 5): not supported.
+    // Block upload initiate (CiA 301 SDO block upload protocol, ccs = 5)
+    // of an object this dictionary lacks: the object's abort.
     assert_eq!(
         rig.req([0xA4, 0x18, 0x10, 0x01, 0x7F, 0, 0, 0]),
-        Some(abort_bytes(0x1018, 1, SdoAbort::UnknownCommand))
+        Some(abort_bytes(0x1018, 1, SdoAbort::ObjectNotExist))
     );
     // Block download initiate during an upload aborts the upload.
     rig.set(0x2004, 0, b"0123456789");
@@ -805,3 +806,5 @@ fn changed_cob_ids_drop_the_transfer() {
     assert_eq!(s.on_frame(&od, &mut NoHooks, &init, Ticks(0)), None);
     assert_eq!(s.poll(&od, Ticks(u32::MAX / 4)), None);
 }
+
+mod block;
