@@ -198,6 +198,14 @@ COP_STATIC_ASSERT(sizeof(BYTE) == 1, BYTE_must_be_8_bits);
 #if (CDRV_CAN_SPEC != CAN20A) && (CDRV_CAN_SPEC != CAN20B)
 #error "CDRV_CAN_SPEC must be CAN20A or CAN20B"
 #endif
+#if (PDO_GRANULARITY != 8) && (PDO_GRANULARITY != 64)
+#error "PDO_GRANULARITY must be 8 or 64"
+#endif
+/* tPdoParam.m_adwMappParam and the PDO mapping objects of objdef.h come in
+ * these two sizes only. */
+#if (PDO_MAX_MAPPENTRIES != 8) && (PDO_MAX_MAPPENTRIES != 64)
+#error "PDO_MAX_MAPPENTRIES must be 8 or 64"
+#endif
 
 typedef BYTE tCopInstanceHdl;
 typedef void MEM* tCopPtrInstance;
@@ -1212,6 +1220,8 @@ typedef struct
     WORD         m_wInhibitTime;
     WORD         m_wEventTime;
     BYTE         m_bNrOfEntries;
+    /* 8 or 64 entries (copdef.h): part of the link-time signature, _pe<n>
+     * in cop_config.h. */
     DWORD        m_adwMappParam[PDO_MAX_MAPPENTRIES];
     tPdoCallback m_fpCallback;
 } tPdoParam;

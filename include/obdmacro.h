@@ -272,26 +272,31 @@
     COP_OBD_IN_IDX(COP_OBD_INDEX(ind, 5, PdoCbConfigCommu))
 
 /* Mapping parameter: sub 0 number of mapped objects, subs 1..8 the mapping
- * entries (constant with PDO_USE_STATIC_MAPPING). */
+ * entries (constant with PDO_USE_STATIC_MAPPING); with PDO_MAX_MAPPENTRIES
+ * 64 (bit mapping, PDO_GRANULARITY 64) subs 9..64 follow, default 0
+ * (objdef.h: COP_OBD_PDO_BIT_ENTRIES). */
 #define COP_OBD_PDO_MAPP(ind, num, max, cnt, ob1, ob2, ob3, ob4, ob5, ob6, ob7, ob8) \
     COP_OBD_IN_ROM(COP_OBD_PARAM_ROM(BYTE, ind, 0x00, cnt) \
                    COP_OBD_PARAM_ROM(DWORD, ind, 0x01, ob1) COP_OBD_PARAM_ROM(DWORD, ind, 0x02, ob2) \
                    COP_OBD_PARAM_ROM(DWORD, ind, 0x03, ob3) COP_OBD_PARAM_ROM(DWORD, ind, 0x04, ob4) \
                    COP_OBD_PARAM_ROM(DWORD, ind, 0x05, ob5) COP_OBD_PARAM_ROM(DWORD, ind, 0x06, ob6) \
-                   COP_OBD_PARAM_ROM(DWORD, ind, 0x07, ob7) COP_OBD_PARAM_ROM(DWORD, ind, 0x08, ob8)) \
+                   COP_OBD_PARAM_ROM(DWORD, ind, 0x07, ob7) COP_OBD_PARAM_ROM(DWORD, ind, 0x08, ob8) \
+                   COP_OBD_PDO_BITS_ONLY(static CONST DWORD ROM COP_OBD_DEF(ind, MappBits) = 0;)) \
     COP_OBD_IN_RAM(COP_OBD_CHECK((num) < (max), PDO_number_##num##_of_##ind##_too_high) \
                    PDO_STATIC_MAPPING_ONEOF(, \
                    COP_OBD_PARAM_RAM(BYTE, ind, 0x00, cnt) \
                    COP_OBD_PARAM_RAM(DWORD, ind, 0x01, ob1) COP_OBD_PARAM_RAM(DWORD, ind, 0x02, ob2) \
                    COP_OBD_PARAM_RAM(DWORD, ind, 0x03, ob3) COP_OBD_PARAM_RAM(DWORD, ind, 0x04, ob4) \
                    COP_OBD_PARAM_RAM(DWORD, ind, 0x05, ob5) COP_OBD_PARAM_RAM(DWORD, ind, 0x06, ob6) \
-                   COP_OBD_PARAM_RAM(DWORD, ind, 0x07, ob7) COP_OBD_PARAM_RAM(DWORD, ind, 0x08, ob8))) \
+                   COP_OBD_PARAM_RAM(DWORD, ind, 0x07, ob7) COP_OBD_PARAM_RAM(DWORD, ind, 0x08, ob8) \
+                   COP_OBD_PDO_BITS_ONLY(static DWORD MEM COP_OBD_ACUR(ind)[PDO_MAX_MAPPENTRIES - 8];))) \
     COP_OBD_IN_SUB(static CONST tObdSubEntry ROM COP_OBD_SUBTAB(ind)[] = { \
         COP_OBD_PDO_MAPP_ENTRY(ind, 0x00, kObdTypUInt8, BYTE) \
         COP_OBD_PDO_MAPP_ENTRY(ind, 0x01, kObdTypUInt32, DWORD) COP_OBD_PDO_MAPP_ENTRY(ind, 0x02, kObdTypUInt32, DWORD) \
         COP_OBD_PDO_MAPP_ENTRY(ind, 0x03, kObdTypUInt32, DWORD) COP_OBD_PDO_MAPP_ENTRY(ind, 0x04, kObdTypUInt32, DWORD) \
         COP_OBD_PDO_MAPP_ENTRY(ind, 0x05, kObdTypUInt32, DWORD) COP_OBD_PDO_MAPP_ENTRY(ind, 0x06, kObdTypUInt32, DWORD) \
-        COP_OBD_PDO_MAPP_ENTRY(ind, 0x07, kObdTypUInt32, DWORD) COP_OBD_PDO_MAPP_ENTRY(ind, 0x08, kObdTypUInt32, DWORD) };) \
+        COP_OBD_PDO_MAPP_ENTRY(ind, 0x07, kObdTypUInt32, DWORD) COP_OBD_PDO_MAPP_ENTRY(ind, 0x08, kObdTypUInt32, DWORD) \
+        COP_OBD_PDO_BIT_ENTRIES(ind) };) \
     COP_OBD_IN_IDX(COP_OBD_INDEX(ind, PDO_MAX_MAPPENTRIES + 1, PDO_STATIC_MAPPING_ONEOF(NULL, PdoCbConfigMapp)))
 
 #define OBD_CREATE_RXPDO_COMMU(ind, num, cob, typ, inh, evt) \

@@ -56,9 +56,13 @@
  *
  * Differences from the SYS TEC objdef.h: the subindex tables are always
  * constant (no RAM copies, OBD_USE_VARIABLE_SUBINDEX_TAB has no effect);
- * the OD-builder key is not stored; PDO bit mapping (PDO_MAX_MAPPENTRIES 64)
- * is not supported; default values are converted with a cast to dtyp, so
- * structure types (TIME_OF_DAY) need the _NOINIT forms.
+ * the OD-builder key is not stored; default values are converted with a
+ * cast to dtyp, so structure types (TIME_OF_DAY) need the _NOINIT forms.
+ *
+ * PDO mapping objects have PDO_MAX_MAPPENTRIES entries: 8, or 64 with
+ * PDO_USE_BIT_MAPPING and PDO_GRANULARITY 64. OBD_CREATE_*PDO_MAPP names
+ * the defaults of subindices 1..8 as in the SYS TEC macro set; subindices
+ * 9..64 (added through PDO_SUBINDEX_BIT_MAPPING) default to 0.
  */
 #ifndef OBJDEF_H
 #define OBJDEF_H
@@ -96,9 +100,6 @@
 #endif
 #if (SRDO_MAX_SRDO_IN_OBD > 64)
 #error "SRDO_MAX_SRDO_IN_OBD must not exceed 64 (0x1301..0x1340)"
-#endif
-#if (PDO_MAX_MAPPENTRIES != 8)
-#error "PDO bit mapping (PDO_MAX_MAPPENTRIES 64) is not supported by this objdef.h"
 #endif
 #if (CDRV_MAX_RX_BUFF_ENTRIES_HIGH < 0) || (CDRV_MAX_TX_BUFF_ENTRIES_HIGH < 0) || \
     (CDRV_MAX_RX_BUFF_ENTRIES_LOW < 0) || (CDRV_MAX_TX_BUFF_ENTRIES_LOW < 0)
@@ -179,7 +180,52 @@
 #endif
 #define CCM_SUBINDEX_RAM_ONLY(...)
 #define CCM_SUBINDEX_RAM_ONEOF(a, b) a
+/* PDO mapping subindices 9..64: one entry of a mapping object's table,
+ * kept only when the mapping objects have 64 entries (bit mapping with
+ * PDO_GRANULARITY 64). def and cur as in tObdSubEntry; cur is NULL with
+ * PDO_USE_STATIC_MAPPING (the entries are constants then). */
+#if (PDO_MAX_MAPPENTRIES == 64)
+#define PDO_SUBINDEX_BIT_MAPPING(sub, typ, acc, def, cur) \
+    COP_OBD_SUBENTRY(sub, typ, acc, PDO_STATIC_MAPPING_ONEOF(kObdKindRom, kObdKindRam), sizeof(DWORD), def, cur)
+#define COP_OBD_PDO_BITS_ONLY(...) __VA_ARGS__
+#else
 #define PDO_SUBINDEX_BIT_MAPPING(sub, typ, acc, def, cur)
+#define COP_OBD_PDO_BITS_ONLY(...)
+#endif
+/* Subindex sub (9..64) of mapping object ind: default 0 (one constant per
+ * object), current value element i of the object's array. */
+#define COP_OBD_PDO_BIT_ENTRY(ind, sub, i) \
+    PDO_SUBINDEX_BIT_MAPPING(sub, kObdTypUInt32, PDO_STATIC_MAPPING_ONEOF(kObdAccCR, kObdAccSRW), \
+                             &COP_OBD_DEF(ind, MappBits), PDO_STATIC_MAPPING_ONEOF(NULL, &COP_OBD_ACUR(ind)[i]))
+#define COP_OBD_PDO_BIT_ENTRIES(ind) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x09,  0) COP_OBD_PDO_BIT_ENTRY(ind, 0x0A,  1) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x0B,  2) COP_OBD_PDO_BIT_ENTRY(ind, 0x0C,  3) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x0D,  4) COP_OBD_PDO_BIT_ENTRY(ind, 0x0E,  5) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x0F,  6) COP_OBD_PDO_BIT_ENTRY(ind, 0x10,  7) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x11,  8) COP_OBD_PDO_BIT_ENTRY(ind, 0x12,  9) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x13, 10) COP_OBD_PDO_BIT_ENTRY(ind, 0x14, 11) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x15, 12) COP_OBD_PDO_BIT_ENTRY(ind, 0x16, 13) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x17, 14) COP_OBD_PDO_BIT_ENTRY(ind, 0x18, 15) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x19, 16) COP_OBD_PDO_BIT_ENTRY(ind, 0x1A, 17) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x1B, 18) COP_OBD_PDO_BIT_ENTRY(ind, 0x1C, 19) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x1D, 20) COP_OBD_PDO_BIT_ENTRY(ind, 0x1E, 21) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x1F, 22) COP_OBD_PDO_BIT_ENTRY(ind, 0x20, 23) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x21, 24) COP_OBD_PDO_BIT_ENTRY(ind, 0x22, 25) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x23, 26) COP_OBD_PDO_BIT_ENTRY(ind, 0x24, 27) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x25, 28) COP_OBD_PDO_BIT_ENTRY(ind, 0x26, 29) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x27, 30) COP_OBD_PDO_BIT_ENTRY(ind, 0x28, 31) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x29, 32) COP_OBD_PDO_BIT_ENTRY(ind, 0x2A, 33) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x2B, 34) COP_OBD_PDO_BIT_ENTRY(ind, 0x2C, 35) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x2D, 36) COP_OBD_PDO_BIT_ENTRY(ind, 0x2E, 37) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x2F, 38) COP_OBD_PDO_BIT_ENTRY(ind, 0x30, 39) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x31, 40) COP_OBD_PDO_BIT_ENTRY(ind, 0x32, 41) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x33, 42) COP_OBD_PDO_BIT_ENTRY(ind, 0x34, 43) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x35, 44) COP_OBD_PDO_BIT_ENTRY(ind, 0x36, 45) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x37, 46) COP_OBD_PDO_BIT_ENTRY(ind, 0x38, 47) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x39, 48) COP_OBD_PDO_BIT_ENTRY(ind, 0x3A, 49) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x3B, 50) COP_OBD_PDO_BIT_ENTRY(ind, 0x3C, 51) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x3D, 52) COP_OBD_PDO_BIT_ENTRY(ind, 0x3E, 53) \
+    COP_OBD_PDO_BIT_ENTRY(ind, 0x3F, 54) COP_OBD_PDO_BIT_ENTRY(ind, 0x40, 55)
 #define OBD_END_SUBINDEX()
 #define OBD_MAX_ARRAY_SUBENTRIES 2
 #if (CDRV_USE_HIGHBUFF != FALSE)

@@ -26,17 +26,17 @@ run_stage() {
         cargo fmt --all -- --check
         cargo clippy --all-targets -- -D warnings
         cargo clippy --lib --no-default-features -- -D warnings
-        cargo clippy --lib --features srdo-static-mapping,srdo-granularity-16 -- -D warnings
+        cargo clippy --lib --features srdo-static-mapping,srdo-granularity-16,pdo-bit-mapping,pdo-granularity-64 -- -D warnings
         CARGO_TARGET_DIR=target/dcf2bin cargo fmt --manifest-path tools/dcf2bin/Cargo.toml -- --check
         CARGO_TARGET_DIR=target/dcf2bin cargo clippy --manifest-path tools/dcf2bin/Cargo.toml --all-targets -- -D warnings
         ;;
     rust)
         stage "cargo test (default switches)"
         cargo test -q
-        stage "cargo test (static mapping, granularity 16, timestamps)"
-        CARGO_TARGET_DIR=target/variant-a cargo test -q --features srdo-static-mapping,srdo-granularity-16,cdrv-timestamp
-        stage "cargo test (no GFC, no program monitor, SRVT checked before 2nd frame, dummy mapping, gaps)"
-        CARGO_TARGET_DIR=target/variant-b cargo test -q --no-default-features --features srdo-check-srvt-before-1strx,srdo-dummy-mapping,srdo-allow-gaps
+        stage "cargo test (static mapping, granularity 16, timestamps, PDO bit mapping with 8 entries)"
+        CARGO_TARGET_DIR=target/variant-a cargo test -q --features srdo-static-mapping,srdo-granularity-16,cdrv-timestamp,pdo-bit-mapping
+        stage "cargo test (no GFC, no program monitor, SRVT checked before 2nd frame, dummy mapping, gaps, PDO bit mapping with granularity 64)"
+        CARGO_TARGET_DIR=target/variant-b cargo test -q --no-default-features --features srdo-check-srvt-before-1strx,srdo-dummy-mapping,srdo-allow-gaps,pdo-bit-mapping,pdo-granularity-64
         stage "dcf2bin (host tool; its python-canopen comparisons need scripts/setup.sh)"
         CARGO_TARGET_DIR=target/dcf2bin cargo test -q --manifest-path tools/dcf2bin/Cargo.toml
         ;;

@@ -13,7 +13,10 @@ use cop::error::{CopKernel, OdError};
 use cop::event::{Event, NmtEvent, NmtState};
 use cop::od::{Access, ByteOrder, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
 use cop::pdo::decl::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
-use cop::pdo::{Direction, PDO_MAX_MAPPENTRIES, PdoParam, StaticPdoParam};
+use cop::pdo::{
+    Direction, PDO_MAX_MAPPENTRIES, PDO_USE_BIT_MAPPING, PDO_USE_DUMMY_MAPPING, PdoParam,
+    StaticPdoParam,
+};
 use cop::port::{CanFrame, CanId, Ticks};
 use cop::sim::{SimBus, SimPort};
 use cop::wire::pdo::encode_sync;
@@ -634,6 +637,11 @@ fn mapping_procedure_over_write_object() {
     // New layout: U32, U16, dummy U8, U8.
     b.write(0x1600, 1, 0x2001_0320, 4).unwrap();
     b.write(0x1600, 2, 0x2001_0210, 4).unwrap();
+    if !PDO_USE_DUMMY_MAPPING {
+        // Without PDO_USE_DUMMY_MAPPING a data type index is no mapping.
+        assert_eq!(abort(b.write(0x1600, 3, 0x0005_0008, 4)), Some(0x0604_0041));
+        return;
+    }
     b.write(0x1600, 3, 0x0005_0008, 4).unwrap();
     b.write(0x1600, 4, 0x2001_0108, 4).unwrap();
     b.write(0x1600, 5, 0x2001_0320, 4).unwrap();
@@ -669,11 +677,26 @@ fn sdo_download_is_judged_like_write_object() {
     assert_eq!(net.b.read(0x1400, 1), 0x181);
 }
 
+/// `PDO_USE_BIT_MAPPING` (seed 003 ch. 4): BOOLEANs as single bits. With
+/// the switch on they share bytes with the next object; with it off
+/// (copdef.h default) such a mapping is refused on both sides.
 #[test]
 fn boolean_bit_mapping() {
     let mut net = Net::new();
     let tx = [0x2000_0401, 0x2000_0501, 0x2000_0601, 0x2000_0108];
     let rx = [0x2001_0401, 0x2001_0501, 0x2001_0601, 0x2001_0108];
+    if !PDO_USE_BIT_MAPPING {
+        for (commu, dir, map) in [(0x1800, Direction::Tx, &tx), (0x1400, Direction::Rx, &rx)] {
+            let r = net.a.define(&PdoParam {
+                cob_id: Some(0x8000_0181),
+                entry_count: Some(map.len() as u8),
+                entries: Some(map),
+                ..PdoParam::new(commu, dir)
+            });
+            assert_eq!(r, Err(CopKernel::PdoGranularityMismatch), "{commu:#x}");
+        }
+        return;
+    }
     net.a.pdo(0x1800, 0x181, 255, 0, 0, &tx);
     net.b.pdo(0x1400, 0x181, 255, 0, 0, &rx);
     net.start();
@@ -693,6 +716,42 @@ fn boolean_bit_mapping() {
         (1, 0, 1)
     );
     assert_eq!(net.b.read(0x2001, 1), 0xFF);
+}
+
+/// `PDO_GRANULARITY` 64 with bit mapping (seed 003 ch. 4): 64 mapping
+/// entries, so 64 BOOLEANs fill a whole PDO; with 8 entries a ninth is
+/// refused.
+#[test]
+fn granularity_64_maps_64_booleans() {
+    let mut net = Net::new();
+    // b4 = 1, b5 = 0 alternating: 0x55 in every byte.
+    let tx: Vec<u32> = (0..64)
+        .map(|i| if i % 2 == 0 { 0x2000_0401 } else { 0x2000_0501 })
+        .collect();
+    let rx: Vec<u32> = (0..64)
+        .map(|i| if i % 2 == 0 { 0x2001_0401 } else { 0x2001_0501 })
+        .collect();
+    if PDO_MAX_MAPPENTRIES < 64 {
+        let nine = &tx[..9];
+        let r = net.a.define(&PdoParam {
+            cob_id: Some(0x8000_0181),
+            entry_count: Some(9),
+            entries: Some(nine),
+            ..PdoParam::new(0x1800, Direction::Tx)
+        });
+        assert_eq!(r, Err(CopKernel::PdoLengthExceeded));
+        return;
+    }
+    net.a.pdo(0x1800, 0x181, 255, 0, 0, &tx);
+    net.b.pdo(0x1400, 0x181, 255, 0, 0, &rx);
+    assert_eq!(net.a.read(0x1A00, 0), 64);
+    assert_eq!(net.a.read(0x1A00, 64), 0x2000_0501);
+    net.start();
+    net.a.write(0x2000, 4, 1, 1).unwrap();
+    net.a.stack.signal_pdo(0x1800).unwrap();
+    net.run(1);
+    assert_eq!(net.frames(0x181)[0].1, vec![0x55; 8]);
+    assert_eq!((net.b.read(0x2001, 4), net.b.read(0x2001, 5)), (1, 0));
 }
 
 #[test]

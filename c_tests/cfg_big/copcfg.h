@@ -1,7 +1,9 @@
 /*
- * copcfg.h of the second test library: every switch that changes the
- * binary interface differs from c_tests/cfg - tObdSize is a DWORD, SRDO
+ * copcfg.h of the second test library: the switches that change the
+ * binary interface differ from c_tests/cfg - tObdSize is a DWORD, SRDO
  * granularity 16 (8 mapping entries), tCdrvMsg carries a receive timestamp.
+ * (The PDO mapping entry count, the last part of the signature, changes in
+ * c_tests/cfg_pdobits.)
  */
 #ifndef COPCFG_H
 #define COPCFG_H

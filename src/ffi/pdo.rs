@@ -156,8 +156,12 @@ static_assertions::const_assert_eq!(
     core::mem::size_of::<tMPdoParam>(),
     round_up(round_up(5, PTR) + PTR + 2, PTR)
 );
+// ILP32: 56 bytes with 8 entries, 280 with 64 (PDO_MAX_MAPPENTRIES).
 #[cfg(target_pointer_width = "32")]
-static_assertions::const_assert_eq!(core::mem::size_of::<tPdoParam>(), 56);
+static_assertions::const_assert_eq!(
+    core::mem::size_of::<tPdoParam>(),
+    24 + 4 * PDO_MAX_MAPPENTRIES
+);
 #[cfg(target_pointer_width = "32")]
 static_assertions::const_assert_eq!(core::mem::size_of::<tPdoStaticParam>(), 24);
 static_assertions::assert_eq_size!(tPdoCallback, *const c_void);

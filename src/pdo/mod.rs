@@ -88,22 +88,11 @@ use crate::wire::pdo::{
     self as wire, COB_INVALID, MapEntry, PdoCobId, SYNC_DEFAULT_COB_ID, bytes_for_bits, tx_type,
 };
 
-/// `PDO_GRANULARITY`: 8 (SYS TEC default and AWorks value). With bit
-/// mapping, 64 allows 64 one-bit entries per PDO.
-pub const PDO_GRANULARITY: u8 = 8;
-/// `PDO_USE_BIT_MAPPING`: BOOLEANs may be mapped as single bits. On (the
-/// AWorks value): it only widens what a mapping may contain, so
-/// applications written for the SYS TEC default (off) behave the same.
-pub const PDO_USE_BIT_MAPPING: bool = true;
-/// `PDO_USE_DUMMY_MAPPING` (SYS TEC default TRUE): RPDOs may skip bits by
-/// mapping a data type index.
-pub const PDO_USE_DUMMY_MAPPING: bool = true;
-/// `PDO_MAX_MAPPENTRIES`, derived as in copdef.h: 64 with bit mapping at a
-/// granularity other than 8, otherwise 8. Sizes `tPdoParam`.
-pub const PDO_MAX_MAPPENTRIES: usize = if PDO_GRANULARITY != 8 && PDO_USE_BIT_MAPPING {
-    64
-} else {
-    8
+// The mapping switches come from the build configuration (copcfg.h through
+// `COP_CONFIG_DIR`, else the Cargo features `pdo-bit-mapping` and
+// `pdo-granularity-64`); re-exported here where the PDO code uses them.
+pub use crate::config::{
+    PDO_GRANULARITY, PDO_MAX_MAPPENTRIES, PDO_USE_BIT_MAPPING, PDO_USE_DUMMY_MAPPING,
 };
 
 /// First RPDO communication parameter.

@@ -251,7 +251,9 @@ fn cia301_mapping_procedure() {
     write(&od, 0x1A00, 3, 0x2000_0108).unwrap();
     // Step 4: three entries would be 72 bits.
     assert_eq!(write(&od, 0x1A00, 0, 3), Err(refuse::LENGTH));
-    assert_eq!(write(&od, 0x1A00, 0, 9), Err(refuse::LENGTH));
+    // One entry more than the PDO has (9 at granularity 8).
+    let too_many = PDO_MAX_MAPPENTRIES as u64 + 1;
+    assert_eq!(write(&od, 0x1A00, 0, too_many), Err(refuse::LENGTH));
     assert_eq!(od.read_uint(0x1A00, 0), Ok(0));
     write(&od, 0x1A00, 0, 2).unwrap();
     // Step 5: create the PDO again.
@@ -425,5 +427,9 @@ fn pdo_index_decoding() {
     assert_eq!(PdoIndex::of(0x1C00), None);
     assert!(handles(0x1005) && handles(0x1007) && handles(0x1BFF));
     assert!(!handles(0x1008) && !handles(0x13FF) && !handles(0x1C00));
-    assert_eq!(PDO_MAX_MAPPENTRIES, 8, "granularity 8 (SYSTEC_API.md §9b)");
+    if PDO_GRANULARITY == 8 || !PDO_USE_BIT_MAPPING {
+        assert_eq!(PDO_MAX_MAPPENTRIES, 8, "granularity 8 (SYSTEC_API.md §9b)");
+    } else {
+        assert_eq!(PDO_MAX_MAPPENTRIES, 64, "bit mapping, granularity 64");
+    }
 }
