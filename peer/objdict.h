@@ -76,6 +76,11 @@ OBD_BEGIN ()
         OBD_BEGIN_SRDO_CRC(1)
             OBD_SUBINDEX_SRDO_CRC(0x01, Crc_Srdo_1)
         OBD_END_SRDO_CRC()
+        // TPDO 1, delivered invalid and unmapped; the dynamic OD
+        // (peer/peer_dynod.dcf) reconfigures it (0x80000180 stands for
+        // 0x80000180 + node-ID, the predefined connection set)
+        OBD_CREATE_TXPDO_COMMU(0x1800, 0, 0x80000180, 0xFF, 0, 0)
+        OBD_CREATE_TXPDO_MAPP(0x1A00, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0)
 
     OBD_END_PART ()
 

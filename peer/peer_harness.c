@@ -8,6 +8,9 @@
 #include "cdrv_sim.h"
 #include "peer_harness.h"
 
+/* abPeerDynodContainer_l: peer/peer_dynod.dcf as a container (dcf2bin) */
+#include "peer_dynod_container.h"
+
 #define PEER_SIM_NODE   0u      /* the stack runs as node 0 of the simulated bus */
 #define PEER_EVENTS     256u
 #define PEER_SDOC_INDEX 0x1280u
@@ -150,12 +153,25 @@ tCopKernel PUBLIC AppProgMonEvent (tProgMonEvent Event_p)
 
 static tCcmInitParam InitParam_g;
 static int           fPeerRunning_g;
+static int           fPeerDynOd_g;      /* a DynBuildOd succeeded, no DynDestroyOd yet */
+
+/* Gives a dynamic OD back before the stack goes away, so that the next
+ * PeerInit starts with the static dictionary and a free pool. */
+static void PeerDropDynOd (void)
+{
+    if (fPeerDynOd_g)
+    {
+        (void) DynDestroyOd();
+        fPeerDynOd_g = 0;
+    }
+}
 
 DWORD PeerInit (BYTE bNodeId_p)
 {
     static tVarParam aVarTab[2];
     tCopKernel Ret;
 
+    PeerDropDynOd();
     if (fPeerRunning_g)
     {
         (void) CcmShutDownCANopen();
@@ -222,6 +238,7 @@ DWORD PeerConnect (void)
 
 DWORD PeerShutdown (void)
 {
+    PeerDropDynOd();
     fPeerRunning_g = 0;
     return (DWORD) CcmShutDownCANopen();
 }
@@ -398,6 +415,50 @@ int PeerOdLimits (WORD wIndex_p, BYTE bSub_p, BYTE* pbLow_p, BYTE* pbHigh_p, DWO
         memcpy(pbHigh_p, pbValues + 2u * pSub->m_dwSize, pSub->m_dwSize);
         return (int) pSub->m_dwSize;
     }
+}
+
+/* ---- dynamic object dictionary ----------------------------------------------------------------- */
+
+BYTE abPeerProcessImage_g[PEER_PROCESS_IMAGE_SIZE];
+
+DWORD PeerDynBuildOd (DWORD* padwPi_p)
+{
+    /* DynBuildOd takes a non-const pointer; it only reads the container */
+    static BYTE abContainer[sizeof(abPeerDynodContainer_l)];
+    tProcessImageDscrpt Pi;
+    tCopKernel Ret;
+
+    memcpy(abContainer, abPeerDynodContainer_l, sizeof(abContainer));
+    memset(abPeerProcessImage_g, 0, sizeof(abPeerProcessImage_g));
+    memset(&Pi, 0, sizeof(Pi));
+    Pi.m_pbProcessImage = abPeerProcessImage_g;
+    Pi.m_dwProcessImageSize = sizeof(abPeerProcessImage_g);
+    Ret = DynBuildOd(abContainer, &Pi);
+    if (Ret != kCopSuccessful)
+    {
+        return (DWORD) Ret;
+    }
+    fPeerDynOd_g = 1;
+    if (padwPi_p != NULL)
+    {
+        padwPi_p[0] = Pi.m_dwProcessImageSize;
+        padwPi_p[1] = Pi.m_dwDynPIOffsetIn;
+        padwPi_p[2] = Pi.m_dwDynPISizeIn;
+        padwPi_p[3] = Pi.m_dwDynPIOffsetOut;
+        padwPi_p[4] = Pi.m_dwDynPISizeOut;
+    }
+    return (DWORD) kCopSuccessful;
+}
+
+DWORD PeerDynDestroyOd (void)
+{
+    fPeerDynOd_g = 0;
+    return (DWORD) DynDestroyOd();
+}
+
+DWORD PeerDynContainerSize (void)
+{
+    return (DWORD) sizeof(abPeerDynodContainer_l);
 }
 
 /* ---- heartbeat consumer and NMT master ------------------------------------------------------------ */

@@ -2,9 +2,10 @@
  * peer_harness.h - the C side of the python-canopen interoperability tests.
  *
  * libcop_peer.so holds this library (built from peer/cfg), the simulated
- * CAN bus of examples_c/sim, the dictionary peer/objdict.h and the small
- * API below, which peer/tests/copbus.py loads with ctypes. One simulated
- * node (node 0 of the bus) runs the stack; every frame it sends is handed
+ * CAN bus of examples_c/sim, the dictionary peer/objdict.h, the container
+ * of its dynamic OD (peer/peer_dynod.dcf) and the small API below, which
+ * peer/tests/copbus.py loads with ctypes. One simulated node (node 0 of the
+ * bus) runs the stack; every frame it sends is handed
  * to Python with PeerTakeSent, every frame Python sends enters the bus
  * with PeerInject, so python-canopen is the only other node on the bus.
  *
@@ -104,6 +105,23 @@ DWORD PeerSendSrdo (WORD wIndex_p);                       /* CcmSendSrdo */
 DWORD PeerCalcSrdoCrc (WORD wIndex_p, WORD* pwCrc_p);     /* CcmCalcSrdoCrc */
 DWORD PeerCheckSrdoConfig (WORD* pwIndex_p);              /* CcmCheckSrdoConfig */
 DWORD PeerSrdoState (WORD wIndex_p, BYTE* pbState_p);     /* CcmGetSrdoState */
+
+/* ---- dynamic object dictionary ------------------------------------------------- */
+
+/* DynBuildOd with the container dcf2bin made from peer/peer_dynod.dcf at
+ * build time (peer/CMakeLists.txt) and the process image
+ * abPeerProcessImage_g. On success padwPi_p (5 DWORDs, may be NULL)
+ * receives the tProcessImageDscrpt results: image size the container
+ * needs, input offset, input size, output offset, output size. The image
+ * is cleared before the build. */
+DWORD PeerDynBuildOd (DWORD* padwPi_p);
+DWORD PeerDynDestroyOd (void);              /* DynDestroyOd */
+/* Size of the built-in container in bytes. */
+DWORD PeerDynContainerSize (void);
+
+#define PEER_PROCESS_IMAGE_SIZE 64u
+
+extern BYTE abPeerProcessImage_g[PEER_PROCESS_IMAGE_SIZE];   /* ctypes in_dll */
 
 /* ---- application variables named by objdict.h (ctypes in_dll) ---------------------- */
 

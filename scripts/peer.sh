@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Interoperability tests against a CANopen implementation nobody here wrote:
-# python-canopen (master, SDO client and server, NMT, heartbeat) on a
-# python-can bus whose other node is this library, loaded with ctypes from
-# build/peer/peer/libcop_peer.so (peer/CMakeLists.txt). The `peer` stage of
+# python-canopen (master, SDO client and server, NMT, heartbeat, PDO, a
+# dynamic object dictionary from peer/peer_dynod.dcf) on a python-can bus
+# whose other node is this library, loaded with ctypes from
+# build/peer/peer/libcop_peer.so (peer/CMakeLists.txt; dcf2bin makes the
+# container of the dynamic OD while it builds). The `peer` stage of
 # scripts/test.sh; python-canopen and python-can come from scripts/setup.sh.
 #
 #   scripts/peer.sh                     build (if needed) and run every test

@@ -114,6 +114,9 @@ class PeerLibrary:
             "PeerCalcSrdoCrc": (c.c_uint32, [c.c_uint16, u16p]),
             "PeerCheckSrdoConfig": (c.c_uint32, [u16p]),
             "PeerSrdoState": (c.c_uint32, [c.c_uint16, u8p]),
+            "PeerDynBuildOd": (c.c_uint32, [u32p]),
+            "PeerDynDestroyOd": (c.c_uint32, []),
+            "PeerDynContainerSize": (c.c_uint32, []),
         }
         for name, (res, args) in sig.items():
             f = getattr(self.lib, name)
@@ -360,6 +363,29 @@ class PeerLibrary:
         st = ctypes.c_uint8()
         self._check("PeerSrdoState", index, ctypes.byref(st))
         return st.value
+
+    # ---- dynamic object dictionary -------------------------------------------------------------------------
+
+    PROCESS_IMAGE_SIZE = 64  # PEER_PROCESS_IMAGE_SIZE
+
+    def dyn_build(self):
+        """DynBuildOd with the container of peer/peer_dynod.dcf; returns the
+        process image description (size, input offset, input size, output
+        offset, output size) or raises CopError."""
+        pi = (ctypes.c_uint32 * 5)()
+        self._check("PeerDynBuildOd", pi)
+        return tuple(pi)
+
+    def dyn_destroy(self):
+        self._check("PeerDynDestroyOd")
+
+    def dyn_container_size(self):
+        return self.lib.PeerDynContainerSize()
+
+    def process_image(self):
+        """The process image handed to DynBuildOd (a ctypes array, read and
+        written under the lock)."""
+        return self.var(ctypes.c_uint8 * self.PROCESS_IMAGE_SIZE, "abPeerProcessImage_g")
 
     # ---- application variables ---------------------------------------------------------------------------
 
