@@ -290,7 +290,7 @@ static void Sync (void)
 
     /* another SYNC COB-ID */
     SimSelectNode(SIM_A);
-    CHECK_RET(CcmConfigSyncConsumer(0x40000080UL, 0), kCopInvalidParam);   /* this library does not produce SYNC */
+    CHECK_RET(CcmConfigSyncConsumer(0x40000080UL, 0), kCopInvalidParam);   /* producing is CcmConfigSyncProducer's job */
     CHECK_RET(CcmConfigSyncConsumer(0x701, 0), kCopInvalidParam);          /* restricted (NMT error control) */
     CHECK_RET(CcmConfigSyncConsumer(0x85, 0), kCopSuccessful);
     ProcessNode(SIM_A);

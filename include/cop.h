@@ -129,6 +129,9 @@ void CcmRegisterErrorCallback(tCcmErrorCallback fpErrorCallback_p);
 
 /**
  * `CcmConfigHbp`: sets the producer heartbeat time (writes 0x1017).
+ * kCopNmtLifeguardVsHeartbeat for a non-zero time while life guarding is
+ * configured (`CcmInitLgs` and a non-zero life time); otherwise the codes
+ * of the object write.
  */
 tCopKernel CcmConfigHbp(WORD wHbProducerTime_p);
 
@@ -222,6 +225,36 @@ tCopKernel DynDestroyOd(void);
  */
 tCopKernel CopSimSelectInstance(BYTE bInstance_p);
 #endif
+
+/**
+ * `CcmInitEmcc`: enables the emergency consumer without an application
+ * callback (any registered by `CcmInitEmccEx` is dropped): emergencies of
+ * the listed producers are received and not reported. Returns
+ * kCopSuccessful (kCopIllegalInstance before `CcmInitCANopen`).
+ */
+tCopKernel CcmInitEmcc(void);
+
+/**
+ * `CcmInitEmccEx`: enables the emergency consumer; every valid emergency
+ * (DLC 8) of a producer listed with `CcmEmccDefineProducerTab` is reported
+ * from inside `CcmProcess` as `pfnCallback_p(node-ID, tEmcParam*)`, in the
+ * order received, in PRE-OPERATIONAL and OPERATIONAL. Returns
+ * kCopSuccessful (kCopIllegalInstance before `CcmInitCANopen`).
+ */
+tCopKernel CcmInitEmccEx(tAppEmccEventCallback pfnCallback_p);
+
+/**
+ * `CcmEmccDefineProducerTab`: the producers (node-IDs) whose emergencies
+ * are received on COB-ID 0x80 + node-ID; replaces the previous table (a
+ * refused table keeps it). kCopInvalidParam (NULL with a count),
+ * kCopEmccNoFreeProducerEntry (more than `EMCC_MAX_CONSUMER`),
+ * kCopEmccNodeIdInvalid (not 1..127, or this node), kCopEmccNodeIdExist
+ * (a node twice), or the driver's code from `CdrvDefineCanId`.
+ *
+ * # Safety
+ * `pbProducerTab_p` must be valid for `bNumOfProducer_p` bytes.
+ */
+tCopKernel CcmEmccDefineProducerTab(const BYTE *pbProducerTab_p, BYTE bNumOfProducer_p);
 
 /**
  * `CcmInitNmtm`: enables the NMT master (boot-up detection, guarding).
@@ -461,8 +494,9 @@ tCopKernel CcmInitSyncConsumer(void);
  * window length (µs), through 0x1005 / 0x1007 where the dictionary has
  * them.
  *
- * Returns kCopSuccessful or kCopInvalidParam (bit 30 set — this library
- * does not produce SYNC —, a restricted or malformed identifier).
+ * Returns kCopSuccessful or kCopInvalidParam (bit 30 set — making this
+ * node the SYNC producer is `CcmConfigSyncProducer`'s job —, a restricted
+ * or malformed identifier).
  */
 tCopKernel CcmConfigSyncConsumer(DWORD dwSyncId_p, DWORD dwSyncWindowLength_p);
 
@@ -480,6 +514,96 @@ void CcmEnterCriticalSectionPdoProcess(void);
  * variables in the next `CcmProcess`.
  */
 void CcmLeaveCriticalSectionPdoProcess(void);
+
+/**
+ * `CcmClearPreDefinedErrorField`: empties the pre-defined error field
+ * 0x1003 (sub 0 = 0, entries 0) and resets the error register 0x1001, as
+ * writing 0 to 0x1003 sub 0 over SDO does. Returns kCopSuccessful, or
+ * kCopObdIndexNotExist when the dictionary has no 0x1003 (nothing
+ * changes).
+ */
+tCopKernel CcmClearPreDefinedErrorField(void);
+
+#if defined(COP_CFG_NMTS_USE_LIFEGUARDING)
+/**
+ * `CcmInitLgs` (only with `NMTS_USE_LIFEGUARDING`): starts the life
+ * guarding slave. Once the NMT master's first guard request has arrived,
+ * every further request must come within guard time × life time factor
+ * (0x100C × 0x100D); otherwise the node sends emergency 0x8130 (error
+ * register bits 0 and 4, recorded in 0x1001 / 0x1003; in STOPPED only
+ * recorded), once per loss. Returns kCopSuccessful. May be called from the
+ * NMT callback at kNmtEvEnterInitialising.
+ */
+tCopKernel CcmInitLgs(void);
+#endif
+
+#if defined(COP_CFG_NMTS_USE_LIFEGUARDING)
+/**
+ * `CcmConfigLgs` (only with `NMTS_USE_LIFEGUARDING`): guard time in ms and
+ * life time factor, written to 0x100C / 0x100D where the dictionary has
+ * them (kept by the stack otherwise, until reset communication); 0 in
+ * either switches supervision off. Returns kCopSuccessful;
+ * kCopNmtLifeguardVsHeartbeat when a non-zero life time is configured
+ * while the producer heartbeat time 0x1017 is not 0 (nothing changes); or
+ * the code of a refused object write.
+ */
+tCopKernel CcmConfigLgs(WORD wLifeGuardTime_p, BYTE bLifeGuardFactor_p);
+#endif
+
+/**
+ * `CcmConfigSyncProducer`: with bit 30 (`CANID_SYNC_PRODUCER`) set in
+ * `dwSyncId_p` this node sends SYNC (DLC 0) on that identifier every
+ * `dwSyncCycleTime_p` µs while PRE-OPERATIONAL or OPERATIONAL, and its own
+ * synchronous PDOs react to it; without bit 30, or with cycle time 0, it
+ * sends none. The cycle time is counted in ticks of 100 µs, rounded down
+ * (at least one tick). The values go to 0x1005 / 0x1006 where the
+ * dictionary has them (kept by the stack otherwise, until reset
+ * communication); the COB-ID is also the SYNC consumer's. Returns
+ * kCopSuccessful; kCopInvalidParam for a restricted or malformed
+ * identifier (nothing changes); or the code of a refused object write.
+ */
+tCopKernel CcmConfigSyncProducer(DWORD dwSyncId_p, DWORD dwSyncCycleTime_p);
+
+/**
+ * `CcmTspSend`: sends one TIME frame (CiA 301: 6 bytes, milliseconds
+ * after midnight in 28 bits, then days since 1 January 1984, both
+ * little-endian) on `dwTimeStampId` (bit 29: 29-bit identifier; bits 30 and
+ * 31 are ignored). Returns kCopSuccessful; kCopInvalidParam for NULL, for
+ * `m_dwMs` of 86 400 000 or more, or for a restricted or malformed
+ * identifier; kCopNmtStateError unless connected and PRE-OPERATIONAL or
+ * OPERATIONAL; or the driver's code.
+ *
+ * # Safety
+ * `pTimeOfDay_p` must be NULL or point to a valid `tTimeOfDay`.
+ */
+tCopKernel CcmTspSend(DWORD dwTimeStampId, const tTimeOfDay *pTimeOfDay_p);
+
+/**
+ * `CcmInitStore`: this library has no non-volatile storage driver, so it
+ * returns kCopCcmStoreHwError (kCopIllegalInstance before
+ * `CcmInitCANopen`). Nothing else depends on it: "save" on 0x1010 is
+ * refused with SDO abort 0x08000020 and "load" on 0x1011 restores the
+ * defaults at the next reset, whether or not this was called.
+ */
+tCopKernel CcmInitStore(void);
+
+/**
+ * `CcmStoreCheckArchivState`: whether stored parameters of a part exist.
+ * Returns kCopCcmStoreHwError (no storage, so never — the application
+ * configures its defaults, as it does for an invalid archive), or
+ * kCopObdIllegalPart when `bCurrentOdPart_p` is not a combination of
+ * `kObdPart*` bits.
+ */
+tCopKernel CcmStoreCheckArchivState(tObdPart bCurrentOdPart_p);
+
+/**
+ * `CcmStoreRestoreDefault`: deletes the stored parameters — there are none
+ * — so that the next reset starts from the dictionary's defaults, which
+ * is what every reset of this library does (as after "load" on 0x1011
+ * sub 1). Returns kCopSuccessful (kCopIllegalInstance before
+ * `CcmInitCANopen`).
+ */
+tCopKernel CcmStoreRestoreDefault(void);
 
 /**
  * `CcmSendSrdo`: sends one transmit SRDO (`wSrdoCommuIndex_p` =

@@ -465,8 +465,10 @@
 #ifndef EMCP_MAX_ERROR_ENTRIES_IN_OBD
 #define EMCP_MAX_ERROR_ENTRIES_IN_OBD 8
 #endif
+/* Emergency producers the consumer can list (CcmEmccDefineProducerTab);
+ * the value of the AWorks example obdcfg.h. */
 #ifndef EMCC_MAX_CONSUMER
-#define EMCC_MAX_CONSUMER 0
+#define EMCC_MAX_CONSUMER 10
 #endif
 #ifndef NMTM_MAX_SLAVE_ENTRIES
 #define NMTM_MAX_SLAVE_ENTRIES 16

@@ -20,22 +20,29 @@
 //! # One processing cycle
 //! 1. receive overrun reported by the driver (SRDO: `kCopSrdoOverrun`);
 //! 2. every received frame, oldest first (NMT, SRDO/GFC, SDO, guarding);
-//! 3. timers: SRDO (SCT, SRVT, program monitor), SDO timeout, heartbeat,
+//! 3. timers: SRDO (SCT, SRVT, program monitor), SYNC producer (then the
+//!    synchronous PDOs it triggers), SDO timeout, heartbeat, life guarding,
 //!    delayed emergencies.
 
+use crate::emcc::EmcyConsumer;
 use crate::emcy::EmcyProducer;
 use crate::error::{CopKernel, CopResult, OdError};
 use crate::event::{Action, ActionQueue, Event, Internal, NmtEvent, NmtState};
 use crate::hbc::HeartbeatConsumer;
 use crate::heartbeat::HeartbeatProducer;
+use crate::lgs::LifeGuardSlave;
 use crate::nmtm::NmtMaster;
 use crate::od::{ByteOrder, Object, ObjectDictionary, Staged, WriteHooks};
 use crate::pdo::Pdo;
 use crate::port::{CanId, CanPort, Priority, RxFrame, Ticks};
 use crate::sdo::{SdoClient, SdoServer};
 use crate::srdo::Srdo;
+use crate::store::StoreRestore;
+use crate::syncp::SyncProducer;
 use crate::wire::emcy::Emergency;
 use crate::wire::nmt::{self, NmtCs};
+
+mod services;
 
 /// Local NMT commands (`tNmtCommand`, `CcmNmtsExecCommand`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -83,6 +90,8 @@ enum Phase {
     Receive,
     /// SRDO timers (resumable).
     SrdoTimers,
+    /// This node's SYNC, before the PDOs it triggers.
+    SyncProducer,
     /// PDO and SYNC work (resumable).
     PdoTimers,
     /// Heartbeat consumer (resumable).
@@ -117,6 +126,10 @@ pub struct Stack {
     sdoc: SdoClient,
     srdo: Srdo,
     pdo: Pdo,
+    emcc: EmcyConsumer,
+    lgs: LifeGuardSlave,
+    syncp: SyncProducer,
+    store: StoreRestore,
     /// The dynamic object dictionary in force (`DynBuildOd`).
     dynamic: Option<crate::od::dynamic::Installed>,
 }
@@ -131,6 +144,9 @@ struct Hooks<'a> {
     hb: &'a mut HeartbeatProducer,
     hbc: &'a mut HeartbeatConsumer,
     emcy: &'a mut EmcyProducer,
+    lgs: &'a mut LifeGuardSlave,
+    syncp: &'a mut SyncProducer,
+    store: &'a mut StoreRestore,
     sdo_changed: bool,
 }
 
@@ -147,6 +163,8 @@ impl WriteHooks for Hooks<'_> {
         if crate::pdo::handles(obj.index()) {
             self.pdo.check_write(od, obj, value)?;
         }
+        crate::emcy::check_error_field_write(obj, value)?;
+        StoreRestore::check_write(od, obj, value)?;
         Ok(())
     }
 
@@ -163,6 +181,15 @@ impl WriteHooks for Hooks<'_> {
             crate::emcy::COB_ID_INDEX | crate::emcy::INHIBIT_INDEX => {
                 self.emcy.reconfigure(od, self.node)
             }
+            crate::emcy::ERROR_FIELD_INDEX if obj.sub() == 0 => crate::emcy::clear_error_field(od),
+            crate::lgs::GUARD_TIME_INDEX | crate::lgs::LIFE_TIME_FACTOR_INDEX => {
+                self.lgs.reconfigure(od)
+            }
+            crate::syncp::COB_ID_SYNC_INDEX | crate::syncp::CYCLE_PERIOD_INDEX => {
+                self.syncp.reconfigure(od, self.now);
+                self.pdo.after_store(od, obj, self.now);
+            }
+            crate::store::LOAD_INDEX => self.store.after_store(od, obj),
             // SDO server 0x1200..0x127F, SDO client 0x1280..0x12FF.
             0x1200..=0x12FF => self.sdo_changed = true,
             0x1300..=0x13FF => self.srdo.after_store(od, obj),
@@ -200,6 +227,10 @@ impl Stack {
             sdoc: SdoClient::new(),
             srdo: Srdo::new(),
             pdo: Pdo::new(),
+            emcc: EmcyConsumer::new(),
+            lgs: LifeGuardSlave::new(),
+            syncp: SyncProducer::new(),
+            store: StoreRestore::new(),
             dynamic: None,
         };
         s.srdo.init(&s.od)?;
@@ -407,8 +438,12 @@ impl Stack {
                 },
                 Phase::SrdoTimers => {
                     if self.srdo.poll(&self.od, self.state, now, &mut self.queue) {
-                        self.phase = Phase::PdoTimers;
+                        self.phase = Phase::SyncProducer;
                     }
+                }
+                Phase::SyncProducer => {
+                    self.produce_sync(port, now);
+                    self.phase = Phase::PdoTimers;
                 }
                 Phase::PdoTimers => {
                     let (od, q, emcy) = (&self.od, &mut self.queue, &mut self.emcy);
@@ -473,6 +508,7 @@ impl Stack {
         if self.connected && self.state != NmtState::Initialisation {
             self.hb.poll(port, self.node_id, self.state as u8, now);
         }
+        self.poll_life_guarding(port, now);
         self.emcy.poll(port, now);
     }
 
@@ -500,9 +536,13 @@ impl Stack {
             if port.send(&reply, Priority::Low).is_ok() {
                 self.guard_toggle = !self.guard_toggle;
             }
+            self.lgs.on_guard_request(rx.time);
             return;
         }
         if self.state == NmtState::Stopped {
+            return;
+        }
+        if self.emcc.on_frame(f, &mut self.queue) {
             return;
         }
         if self
@@ -528,6 +568,9 @@ impl Stack {
                 hb: &mut self.hb,
                 hbc: &mut self.hbc,
                 emcy: &mut self.emcy,
+                lgs: &mut self.lgs,
+                syncp: &mut self.syncp,
+                store: &mut self.store,
                 sdo_changed: false,
             };
             let reply = self.sdo.on_frame(&self.od, &mut hooks, f, now);
@@ -618,9 +661,18 @@ impl Stack {
 
     fn run(&mut self, i: Internal, port: &mut impl CanPort, now: Ticks) {
         match i {
-            Internal::RestoreApplication => self.restore_defaults(0x2000, 0x9FFF),
-            Internal::RestoreCommunication => self.restore_defaults(0x1000, 0x1FFF),
+            Internal::RestoreApplication => {
+                self.restore_defaults(0x2000, 0x9FFF);
+                self.store.restored(crate::store::part::APP);
+            }
+            Internal::RestoreCommunication => {
+                self.restore_defaults(0x1000, 0x1FFF);
+                self.store.restored(crate::store::part::GEN);
+                self.lgs.reset_communication();
+                self.syncp.reset_communication();
+            }
             Internal::Reconfigure => {
+                self.reconfigure_services(now);
                 self.hb.reconfigure(&self.od, now);
                 self.hbc.reconfigure(&self.od);
                 self.emcy.reconfigure(&self.od, self.node_id);
@@ -662,6 +714,7 @@ impl Stack {
     /// dynamic OD was built, rolled back or destroyed. PDOs keep running
     /// when the node is OPERATIONAL.
     pub fn reload_configuration(&mut self, port: &mut impl CanPort, now: Ticks) {
+        self.reconfigure_services(now);
         self.hb.reconfigure(&self.od, now);
         self.hbc.reconfigure(&self.od);
         self.emcy.reconfigure(&self.od, self.node_id);
@@ -692,6 +745,7 @@ impl Stack {
         let _ = self.od.set_user_part(original_user);
         self.od.restore_defaults(0x1400, 0x1BFF);
         self.sdo.cancel();
+        self.reconfigure_services(now);
         self.hb.reconfigure(&self.od, now);
         self.hbc.reconfigure(&self.od);
         self.emcy.reconfigure(&self.od, self.node_id);
@@ -782,6 +836,9 @@ impl Stack {
             hb: &mut self.hb,
             hbc: &mut self.hbc,
             emcy: &mut self.emcy,
+            lgs: &mut self.lgs,
+            syncp: &mut self.syncp,
+            store: &mut self.store,
             sdo_changed: false,
         };
         let r = self.od.write(index, sub, order, data, &mut hooks);

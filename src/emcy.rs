@@ -1,7 +1,12 @@
 //! Emergency producer (objects 0x1001, 0x1003, 0x1014, 0x1015).
+//!
+//! The pre-defined error field 0x1003 is emptied by
+//! `CcmClearPreDefinedErrorField` or by writing 0 to its subindex 0 (CiA
+//! 301 7.5.2.4); both also reset the error register 0x1001. Any other value
+//! written to subindex 0 is refused with SDO abort 0x06090030.
 
-use crate::error::{CopKernel, CopResult};
-use crate::od::ObjectDictionary;
+use crate::error::{CopKernel, CopResult, OdError, SdoAbort};
+use crate::od::{Object, ObjectDictionary, Staged};
 use crate::port::{CanId, CanPort, Priority, Ticks};
 use crate::wire::emcy::{self, Emergency};
 
@@ -133,9 +138,38 @@ impl EmcyProducer {
     }
 }
 
+/// A write of anything but 0 to 0x1003 sub 0 (CiA 301 7.5.2.4).
+pub const REFUSE_ERROR_COUNT: OdError = OdError::new(CopKernel::InvalidParam, SdoAbort::ValueRange);
+
+/// Module hook: only 0 may be written to 0x1003 sub 0 (the other
+/// subindices follow the dictionary's access rights).
+pub fn check_error_field_write(obj: &Object, value: &Staged) -> Result<(), OdError> {
+    if obj.index() == ERROR_FIELD_INDEX && obj.sub() == 0 && value.as_u64() != Some(0) {
+        return Err(REFUSE_ERROR_COUNT);
+    }
+    Ok(())
+}
+
+/// Empties the pre-defined error field (sub 0 = 0, the entries 0) and
+/// resets the error register, where those objects exist.
+pub fn clear_error_field(od: &ObjectDictionary) {
+    let _ = od.poke_uint(ERROR_REGISTER_INDEX, 0, 0);
+    let Some(entry) = od.find_entry(ERROR_FIELD_INDEX) else {
+        return;
+    };
+    for sub in 1..od.sub_count(entry) {
+        if let Ok(sub) = u8::try_from(sub) {
+            let _ = od.poke_uint(ERROR_FIELD_INDEX, sub, 0);
+        }
+    }
+    let _ = od.poke_uint(ERROR_FIELD_INDEX, 0, 0);
+}
+
 /// Updates the error register and pushes the error into the pre-defined
-/// error field (newest at subindex 1), where those objects exist.
-fn record(od: &ObjectDictionary, e: &Emergency) {
+/// error field (newest at subindex 1), where those objects exist, without
+/// sending anything (an error that arises while EMCY may not be sent, such
+/// as in STOPPED).
+pub fn record(od: &ObjectDictionary, e: &Emergency) {
     let _ = od.poke_uint(ERROR_REGISTER_INDEX, 0, u64::from(e.register));
     let Some(entry) = od.find_entry(ERROR_FIELD_INDEX) else {
         return;

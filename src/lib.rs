@@ -6,7 +6,8 @@
 //! Layout:
 //! * [`wire`]: frame encoding and decoding per protocol, no state;
 //! * [`od`]: the object dictionary;
-//! * [`nmt`], [`heartbeat`], [`emcy`], [`sdo`], [`srdo`]: protocol state
+//! * [`nmt`], [`heartbeat`], [`emcy`], [`sdo`], [`srdo`], [`pdo`], [`hbc`],
+//!   [`nmtm`], [`emcc`], [`lgs`], [`syncp`], [`store`]: protocol state
 //!   machines, each driven with the current time and received frames;
 //! * [`ccm`]: the stack that ties them together (the CCM layer);
 //! * [`port`]: the CAN driver and clock contract;
@@ -30,17 +31,21 @@
 
 pub mod ccm;
 pub mod config;
+pub mod emcc;
 pub mod emcy;
 pub mod error;
 pub mod event;
 pub mod hbc;
 pub mod heartbeat;
+pub mod lgs;
 pub mod nmtm;
 pub mod od;
 pub mod pdo;
 pub mod port;
 pub mod sdo;
 pub mod srdo;
+pub mod store;
+pub mod syncp;
 pub mod wire;
 
 #[cfg(any(test, feature = "std"))]

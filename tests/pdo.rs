@@ -1016,7 +1016,7 @@ fn sync_consumer_configuration() {
     net.bus.inject(encode_sync(CanId::std_masked(0x81), None));
     net.step();
     assert_eq!(net.frames(0x281).len(), 1);
-    // This library does not produce SYNC.
+    // The consumer API does not make this node the SYNC producer.
     assert_eq!(
         net.a.stack.config_sync_consumer(0x4000_0080, 0, now),
         Err(CopKernel::InvalidParam)

@@ -289,15 +289,13 @@ pub extern "C" fn CcmRegisterErrorCallback(fpErrorCallback_p: tCcmErrorCallback)
 }
 
 /// `CcmConfigHbp`: sets the producer heartbeat time (writes 0x1017).
+/// kCopNmtLifeguardVsHeartbeat for a non-zero time while life guarding is
+/// configured (`CcmInitLgs` and a non-zero life time); otherwise the codes
+/// of the object write.
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmConfigHbp(wHbProducerTime_p: WORD) -> tCopKernel {
     let now = TgtClock.now();
-    let bytes = wHbProducerTime_p.to_ne_bytes();
-    code(global::with(|i| {
-        i.stack
-            .write_object(0x1017, 0, ByteOrder::Native, &bytes, now)
-            .map_err(|e| e.kernel)
-    }))
+    code(global::with(|i| i.stack.config_hbp(wHbProducerTime_p, now)))
 }
 
 /// `CcmConfigEmcp`: sets the EMCY COB-ID (bit 31 disables the producer).

@@ -13,8 +13,8 @@ use core::cell::{Cell, UnsafeCell};
 
 use super::driver::{CdrvPort, TgtClock};
 use super::types::{
-    tAppHbcEventCallback, tAppNmtmEventCallback, tCcmErrorCallback, tCcmNmtEventCallback,
-    tSdocCbFinishParam, tSdocCbFinished, tSrdoAppCallbacks,
+    tAppEmccEventCallback, tAppHbcEventCallback, tAppNmtmEventCallback, tCcmErrorCallback,
+    tCcmNmtEventCallback, tSdocCbFinishParam, tSdocCbFinished, tSrdoAppCallbacks,
 };
 use crate::ccm::Stack;
 use crate::error::CopKernel;
@@ -35,6 +35,8 @@ pub struct Callbacks {
     pub nmtm: tAppNmtmEventCallback,
     /// `CcmInitHbcEx`.
     pub hbc: tAppHbcEventCallback,
+    /// `CcmInitEmccEx`.
+    pub emcc: tAppEmccEventCallback,
     /// Finish callbacks of the SDO client channels (per transfer).
     pub sdoc: [tSdocCbFinished; crate::sdo::client::CAPACITY],
 }
@@ -211,7 +213,7 @@ fn dispatch(ev: Event, cbs: Callbacks) {
                 unsafe { cb(&mut p) };
             }
         }
-        Event::Emcc(..) => super::master::dispatch(ev),
+        Event::Emcc(node, e) => super::master::dispatch_emcc(node, e, cbs.emcc),
         Event::Pdo(commu_index) => super::pdo::dispatch(commu_index),
     }
 }

@@ -1,5 +1,6 @@
 //! Master-side C API: NMT master (`CcmInitNmtm`, `CcmSendNmtCommand`,
-//! node guarding) and heartbeat consumer (`CcmInitHbc`, ...).
+//! node guarding), heartbeat consumer (`CcmInitHbc`, ...) and emergency
+//! consumer (`CcmInitEmcc`, `CcmInitEmccEx`, `CcmEmccDefineProducerTab`).
 //!
 //! Conventions as in [`super::ccm`]: `tCopKernel` results, pointers checked
 //! first, kCopIllegalInstance before `CcmInitCANopen`.
@@ -8,8 +9,8 @@ use super::driver::TgtClock;
 use super::global::{self, Instance};
 use super::types::*;
 use crate::error::{CopKernel, CopResult, to_code};
-use crate::event::Event;
 use crate::port::Clock;
+use crate::wire::emcy::Emergency;
 use crate::wire::nmt::NmtCs;
 
 fn code(r: Result<CopResult, CopKernel>) -> tCopKernel {
@@ -19,10 +20,81 @@ fn code(r: Result<CopResult, CopKernel>) -> tCopKernel {
     }
 }
 
-/// Master-side events without a callback of their own yet (emergency
-/// consumer) are dropped here.
-pub fn dispatch(ev: Event) {
-    let _ = ev;
+/// Hands a received emergency to the callback of `CcmInitEmccEx` as a
+/// `tEmcParam`: error code, error register and the five
+/// manufacturer-specific bytes of the frame; `m_wAdditionalInfo` has no
+/// counterpart in the frame and is 0. The structure lives for the call.
+/// Without a callback (`CcmInitEmcc`) the emergency is not reported.
+pub fn dispatch_emcc(node: u8, e: Emergency, cb: tAppEmccEventCallback) {
+    let Some(cb) = cb else {
+        return;
+    };
+    let mut p = tEmcParam {
+        m_wEmcyErrorCode: e.code,
+        m_bErrorRegister: e.register,
+        m_abManufactErrorCode: e.manufacturer,
+        m_wAdditionalInfo: 0,
+    };
+    // SAFETY: the callback registered with CcmInitEmccEx; `p` lives for
+    // the call.
+    unsafe { cb(node, &mut p) };
+}
+
+/// `CcmInitEmcc`: enables the emergency consumer without an application
+/// callback (any registered by `CcmInitEmccEx` is dropped): emergencies of
+/// the listed producers are received and not reported. Returns
+/// kCopSuccessful (kCopIllegalInstance before `CcmInitCANopen`).
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmInitEmcc() -> tCopKernel {
+    code(global::with(|i| {
+        i.stack.init_emcc();
+        i.callbacks.emcc = None;
+        Ok(())
+    }))
+}
+
+/// `CcmInitEmccEx`: enables the emergency consumer; every valid emergency
+/// (DLC 8) of a producer listed with `CcmEmccDefineProducerTab` is reported
+/// from inside `CcmProcess` as `pfnCallback_p(node-ID, tEmcParam*)`, in the
+/// order received, in PRE-OPERATIONAL and OPERATIONAL. Returns
+/// kCopSuccessful (kCopIllegalInstance before `CcmInitCANopen`).
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmInitEmccEx(pfnCallback_p: tAppEmccEventCallback) -> tCopKernel {
+    code(global::with(|i| {
+        i.stack.init_emcc();
+        i.callbacks.emcc = pfnCallback_p;
+        Ok(())
+    }))
+}
+
+/// `CcmEmccDefineProducerTab`: the producers (node-IDs) whose emergencies
+/// are received on COB-ID 0x80 + node-ID; replaces the previous table (a
+/// refused table keeps it). kCopInvalidParam (NULL with a count),
+/// kCopEmccNoFreeProducerEntry (more than `EMCC_MAX_CONSUMER`),
+/// kCopEmccNodeIdInvalid (not 1..127, or this node), kCopEmccNodeIdExist
+/// (a node twice), or the driver's code from `CdrvDefineCanId`.
+///
+/// # Safety
+/// `pbProducerTab_p` must be valid for `bNumOfProducer_p` bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmEmccDefineProducerTab(
+    pbProducerTab_p: *const BYTE,
+    bNumOfProducer_p: BYTE,
+) -> tCopKernel {
+    let n = usize::from(bNumOfProducer_p);
+    if pbProducerTab_p.is_null() && n > 0 {
+        return CopKernel::InvalidParam.code();
+    }
+    let nodes: &[u8] = if n == 0 {
+        &[]
+    } else {
+        // SAFETY: the caller guarantees n readable bytes.
+        unsafe { core::slice::from_raw_parts(pbProducerTab_p, n) }
+    };
+    code(global::with(|i| {
+        let Instance { stack, port, .. } = i;
+        stack.define_emcc_producers(port, nodes)
+    }))
 }
 
 /// `CcmInitNmtm`: enables the NMT master (boot-up detection, guarding).

@@ -13,6 +13,7 @@ pub mod od_table;
 #[cfg(test)]
 mod od_callback_tests;
 pub mod pdo;
+pub mod services;
 pub mod srdo;
 pub mod stack_callbacks;
 pub mod types;

@@ -436,8 +436,9 @@ pub extern "C" fn CcmInitSyncConsumer() -> tCopKernel {
 /// window length (µs), through 0x1005 / 0x1007 where the dictionary has
 /// them.
 ///
-/// Returns kCopSuccessful or kCopInvalidParam (bit 30 set — this library
-/// does not produce SYNC —, a restricted or malformed identifier).
+/// Returns kCopSuccessful or kCopInvalidParam (bit 30 set — making this
+/// node the SYNC producer is `CcmConfigSyncProducer`'s job —, a restricted
+/// or malformed identifier).
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmConfigSyncConsumer(
     dwSyncId_p: DWORD,

@@ -155,6 +155,24 @@ pub type tAppNmtmEventCallback =
 pub type tAppHbcEventCallback =
     Option<unsafe extern "C" fn(bNodeId_p: BYTE, HbcEvent_p: tNmtErrCtrlEvent) -> tCopKernel>;
 
+/// `tAppEmccEventCallback` (`CcmInitEmccEx`): producer node-ID and the
+/// received emergency.
+pub type tAppEmccEventCallback =
+    Option<unsafe extern "C" fn(bNodeId_p: BYTE, pEmcParam_p: *mut tEmcParam) -> tCopKernel>;
+
+/// `tObdPart`: `kObdPart*` bits.
+pub type tObdPart = tFastByte;
+
+/// `tTimeOfDay` (`CcmTspSend`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct tTimeOfDay {
+    /// Milliseconds after midnight.
+    pub m_dwMs: DWORD,
+    /// Days since 1 January 1984.
+    pub m_wDays: WORD,
+}
+
 /// `tHbcProdParam` (`CcmHbcDefineProducerTab`; field names as in cop.h).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
@@ -449,6 +467,7 @@ static_assertions::const_assert_eq!(core::mem::size_of::<tSdocCbFinishParam>(), 
 static_assertions::const_assert_eq!(core::mem::size_of::<tNmtmSlaveParam>(), 4);
 static_assertions::const_assert_eq!(core::mem::size_of::<tNmtmSlaveInfo>(), 6);
 static_assertions::const_assert_eq!(core::mem::size_of::<tEmcParam>(), 10);
+static_assertions::const_assert_eq!(core::mem::size_of::<tTimeOfDay>(), 8);
 static_assertions::const_assert_eq!(
     core::mem::size_of::<tCdrvHwParam>(),
     2 * core::mem::size_of::<*mut c_void>()

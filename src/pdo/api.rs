@@ -12,7 +12,7 @@ use crate::ccm::Stack;
 use crate::error::{CopKernel, CopResult, OdError};
 use crate::od::{ByteOrder, Storage};
 use crate::port::{CanPort, Ticks};
-use crate::wire::pdo::{COB_EXTENDED, COB_ID_MASK, COB_INVALID};
+use crate::wire::pdo::{COB_EXTENDED, COB_ID_MASK, COB_INVALID, COB_NO_RTR};
 
 /// One PDO definition (`tPdoParam` of `CcmDefinePdoTab`); `None` fields
 /// are not valid (their `kPdoValid*` flag is clear) and keep what the
@@ -302,8 +302,13 @@ impl Stack {
 
     /// `CcmConfigSyncConsumer`: sets the SYNC COB-ID and the synchronous
     /// window (µs), through 0x1005 / 0x1007 where the dictionary has them.
-    /// `kCopInvalidParam` for a COB-ID this consumer cannot use.
+    /// `kCopInvalidParam` for a COB-ID this consumer cannot use, and for
+    /// bit 30: making this node the SYNC producer is
+    /// `CcmConfigSyncProducer`'s job.
     pub fn config_sync_consumer(&mut self, cob_id: u32, window_us: u32, now: Ticks) -> CopResult {
+        if cob_id & COB_NO_RTR != 0 {
+            return Err(CopKernel::InvalidParam);
+        }
         let has_cob = self.od().find_entry(SYNC_COB_ID_INDEX).is_some();
         let has_window = self.od().find_entry(SYNC_WINDOW_INDEX).is_some();
         if has_cob {
@@ -325,6 +330,15 @@ impl Stack {
             parts.pdo.set_sync(cob, window_us)?;
         }
         Ok(())
+    }
+
+    /// A SYNC this node sent itself (the controller does not receive it):
+    /// the PDO module reacts as to a received one, in OPERATIONAL.
+    pub(crate) fn own_sync(&mut self, at: Ticks) {
+        let parts = self.pdo_parts();
+        if parts.state == crate::event::NmtState::Operational {
+            parts.pdo.on_sync(at);
+        }
     }
 
     /// `CcmEnterCriticalSectionPdoProcess`.

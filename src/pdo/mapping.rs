@@ -187,15 +187,11 @@ pub fn check_write(
     }
 }
 
-/// 0x1005 (CiA 301 §7.5.2.5): this library consumes SYNC but does not
-/// produce it, so bit 30 ("generate SYNC") is refused with 0x06090030 as
-/// CiA 301 prescribes for devices that cannot produce SYNC. Bit 31 is
-/// "do not care".
+/// 0x1005 (CiA 301 §7.5.2.5): the identifier must be usable; bit 30
+/// ("generate SYNC") makes this node the SYNC producer
+/// ([`crate::syncp`]); bit 31 is "do not care".
 fn check_sync_cob_id(v: u32) -> Result<(), OdError> {
-    if v & COB_NO_RTR != 0 {
-        return Err(refuse::INVALID);
-    }
-    wire::check_identifier(v & !COB_INVALID, crate::config::CDRV_CAN20B)
+    wire::check_identifier(v & !(COB_INVALID | COB_NO_RTR), crate::config::CDRV_CAN20B)
         .map_err(|_| refuse::INVALID)
 }
 

@@ -50,8 +50,9 @@
 //!   RPDO 1–4) gets the node-ID added after reset communication, as the
 //!   EMCY producer does with 0x80.
 //! * The SYNC consumer is always active with the COB-ID of 0x1005 (0x80
-//!   when the dictionary has no 0x1005). This library does not produce
-//!   SYNC: 0x1005 bit 30 is refused.
+//!   when the dictionary has no 0x1005). With bit 30 set this node is the
+//!   SYNC producer ([`crate::syncp`]); the stack passes each SYNC it sends
+//!   to this module, which treats it like a received one.
 //! * The SYNC counter byte (DLC 1) is accepted and not evaluated: the
 //!   parameter objects end at sub 5, so there is no SYNC start value;
 //!   cyclic types count SYNCs from entering OPERATIONAL. Frames on the SYNC

@@ -304,11 +304,13 @@ fn a_pdo_cannot_become_valid_with_a_bad_default_mapping() {
 #[test]
 fn sync_cob_id_rules() {
     let (_g, od) = fresh();
-    // CiA 301 §7.5.2.5: bit 30 = "generate SYNC"; this library only
-    // consumes, so it is refused with 0x06090030.
-    assert_eq!(write(&od, 0x1005, 0, 0x4000_0080), Err(refuse::INVALID));
+    // CiA 301 §7.5.2.5: bit 30 = "generate SYNC" (this node produces);
+    // restricted identifiers are refused with 0x06090030, also with bit 30.
     assert_eq!(write(&od, 0x1005, 0, 0x701), Err(refuse::INVALID));
+    assert_eq!(write(&od, 0x1005, 0, 0x4000_0701), Err(refuse::INVALID));
     assert_eq!(od.read_uint(0x1005, 0), Ok(0x80));
+    write(&od, 0x1005, 0, 0x4000_0080).unwrap();
+    write(&od, 0x1005, 0, 0x80).unwrap();
     // Bit 31 is "do not care".
     write(&od, 0x1005, 0, 0x8000_0081).unwrap();
     write(&od, 0x1005, 0, 0x81).unwrap();

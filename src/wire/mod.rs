@@ -6,3 +6,4 @@ pub mod nmt;
 pub mod pdo;
 pub mod sdo;
 pub mod srdo;
+pub mod time;

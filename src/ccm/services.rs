@@ -1,0 +1,247 @@
+//! The stack's API for the smaller CCM services: emergency consumer,
+//! pre-defined error field, life guarding slave, SYNC producer, TIME
+//! producer and store / restore. Each service's rules are documented in its
+//! module ([`crate::emcc`], [`crate::emcy`], [`crate::lgs`],
+//! [`crate::syncp`], [`crate::wire::time`], [`crate::store`]); this file
+//! connects them to the dictionary, the NMT state and the other modules.
+
+use super::Stack;
+use crate::emcc::EmcyConsumer;
+use crate::error::{CopKernel, CopResult};
+use crate::event::NmtState;
+use crate::lgs::{self, LifeGuardSlave};
+use crate::od::ByteOrder;
+use crate::port::{CanId, CanPort, Priority, Ticks};
+use crate::store::{self, StoreRestore};
+use crate::syncp::{self, SyncProducer};
+use crate::wire::emcy::Emergency;
+use crate::wire::pdo::{COB_INVALID, COB_NO_RTR};
+use crate::wire::time::{self, TimeOfDay};
+
+impl Stack {
+    fn operating(&self) -> bool {
+        self.connected && matches!(self.state, NmtState::PreOperational | NmtState::Operational)
+    }
+
+    /// Writes an object through the dictionary's checks and the module
+    /// hooks, with the kernel code of a refusal.
+    fn write_le(&mut self, index: u16, value: &[u8], now: Ticks) -> CopResult {
+        self.write_object(index, 0, ByteOrder::Wire, value, now)
+            .map_err(|e| e.kernel)
+    }
+
+    /// Module parameters that follow the communication objects (after
+    /// reset communication and after a dynamic OD changed the dictionary).
+    pub(super) fn reconfigure_services(&mut self, now: Ticks) {
+        self.lgs.reconfigure(&self.od);
+        self.syncp.reconfigure(&self.od, now);
+        self.store.reconfigure(&self.od);
+    }
+
+    // ------------------------------------------------------------------
+    // Emergency consumer
+    // ------------------------------------------------------------------
+
+    /// The emergency consumer.
+    pub fn emcc(&self) -> &EmcyConsumer {
+        &self.emcc
+    }
+
+    /// `CcmInitEmcc` / `CcmInitEmccEx`: received emergencies of the listed
+    /// producers become [`crate::event::Event::Emcc`] from now on.
+    pub fn init_emcc(&mut self) {
+        self.emcc.enable();
+    }
+
+    /// `CcmEmccDefineProducerTab` (codes: [`EmcyConsumer::define_producers`]).
+    pub fn define_emcc_producers(&mut self, port: &mut impl CanPort, nodes: &[u8]) -> CopResult {
+        self.emcc.define_producers(nodes, self.node_id, port)
+    }
+
+    // ------------------------------------------------------------------
+    // Pre-defined error field
+    // ------------------------------------------------------------------
+
+    /// `CcmClearPreDefinedErrorField`: empties 0x1003 (sub 0 = 0) and
+    /// resets 0x1001. kCopObdIndexNotExist when the dictionary has no
+    /// 0x1003 (nothing changes).
+    pub fn clear_error_field(&mut self) -> CopResult {
+        if self.od.find_entry(crate::emcy::ERROR_FIELD_INDEX).is_none() {
+            return Err(CopKernel::ObdIndexNotExist);
+        }
+        crate::emcy::clear_error_field(&self.od);
+        Ok(())
+    }
+
+    // ------------------------------------------------------------------
+    // Life guarding slave
+    // ------------------------------------------------------------------
+
+    /// The life guarding slave.
+    pub fn lgs(&self) -> &LifeGuardSlave {
+        &self.lgs
+    }
+
+    /// `CcmInitLgs`.
+    pub fn init_lgs(&mut self) {
+        self.lgs.init();
+    }
+
+    /// `CcmConfigLgs`: guard time (ms) and life time factor, written to
+    /// 0x100C / 0x100D where the dictionary has them and kept by the module
+    /// otherwise. kCopNmtLifeguardVsHeartbeat when a non-zero life time is
+    /// asked for while the producer heartbeat time (0x1017) is not 0
+    /// (nothing changes); a refused object write gives its code.
+    pub fn config_lgs(&mut self, guard_ms: u16, factor: u8, now: Ticks) -> CopResult {
+        if guard_ms > 0 && factor > 0 && self.hb.period_ms() > 0 {
+            return Err(CopKernel::NmtLifeguardVsHeartbeat);
+        }
+        if self.od.find_entry(lgs::GUARD_TIME_INDEX).is_some() {
+            self.write_le(lgs::GUARD_TIME_INDEX, &guard_ms.to_le_bytes(), now)?;
+        }
+        if self.od.find_entry(lgs::LIFE_TIME_FACTOR_INDEX).is_some() {
+            self.write_le(lgs::LIFE_TIME_FACTOR_INDEX, &[factor], now)?;
+        }
+        self.lgs.set_own(guard_ms, factor);
+        self.lgs.reconfigure(&self.od);
+        Ok(())
+    }
+
+    /// `CcmConfigHbp`: writes the producer heartbeat time 0x1017 (ms).
+    /// kCopNmtLifeguardVsHeartbeat when a non-zero time is asked for while
+    /// life guarding is configured (after `CcmInitLgs`, life time not 0);
+    /// otherwise the codes of the object write.
+    pub fn config_hbp(&mut self, time_ms: u16, now: Ticks) -> CopResult {
+        if time_ms > 0 && self.lgs.is_configured() {
+            return Err(CopKernel::NmtLifeguardVsHeartbeat);
+        }
+        self.write_le(
+            crate::heartbeat::PRODUCER_TIME_INDEX,
+            &time_ms.to_le_bytes(),
+            now,
+        )
+    }
+
+    /// The life guarding event: emergency 0x8130 with the error register's
+    /// generic and communication bits, recorded in 0x1001 / 0x1003 and
+    /// sent (in STOPPED, where EMCY is not sent, only recorded).
+    pub(super) fn poll_life_guarding(&mut self, port: &mut impl CanPort, now: Ticks) {
+        if !self.connected || !self.lgs.poll(now, self.hb.period_ms() > 0) {
+            return;
+        }
+        let register = self
+            .od
+            .read_uint(crate::emcy::ERROR_REGISTER_INDEX, 0)
+            .map_or(0, |v| v as u8);
+        let e = Emergency {
+            code: lgs::EMCY_LIFE_GUARD,
+            register: register | lgs::ERROR_REGISTER_BITS,
+            manufacturer: [0; 5],
+        };
+        if self.state == NmtState::Stopped {
+            crate::emcy::record(&self.od, &e);
+        } else {
+            // A full inhibit-time queue or a disabled producer loses the
+            // frame; the error is recorded in 0x1001 / 0x1003 either way.
+            let _ = self.emcy.send(&self.od, port, now, e);
+        }
+    }
+
+    // ------------------------------------------------------------------
+    // SYNC producer
+    // ------------------------------------------------------------------
+
+    /// The SYNC producer.
+    pub fn syncp(&self) -> &SyncProducer {
+        &self.syncp
+    }
+
+    /// `CcmConfigSyncProducer`: SYNC COB-ID (bit 30 set: this node
+    /// produces) and communication cycle period in µs, written to 0x1006
+    /// and 0x1005 where the dictionary has them and kept by the module
+    /// otherwise; the COB-ID is also the SYNC consumer's (one object, CiA
+    /// 301 7.5.2.5). kCopInvalidParam for an identifier this node cannot
+    /// send on (nothing changes); a refused object write gives its code.
+    pub fn config_sync_producer(&mut self, cob: u32, cycle_us: u32, now: Ticks) -> CopResult {
+        if !syncp::usable_cob_id(cob) {
+            return Err(CopKernel::InvalidParam);
+        }
+        if self.od.find_entry(syncp::CYCLE_PERIOD_INDEX).is_some() {
+            self.write_le(syncp::CYCLE_PERIOD_INDEX, &cycle_us.to_le_bytes(), now)?;
+        }
+        if self.od.find_entry(syncp::COB_ID_SYNC_INDEX).is_some() {
+            self.write_le(syncp::COB_ID_SYNC_INDEX, &cob.to_le_bytes(), now)?;
+        } else {
+            let window = self.pdo.sync_window_us();
+            self.pdo
+                .set_sync(cob & !(COB_INVALID | COB_NO_RTR), window)?;
+        }
+        self.syncp.set_own(cob, cycle_us);
+        self.syncp.reconfigure(&self.od, now);
+        Ok(())
+    }
+
+    /// Sends this node's SYNC when due and lets its own PDOs see it.
+    pub(super) fn produce_sync(&mut self, port: &mut impl CanPort, now: Ticks) {
+        let operating = self.operating();
+        if self.syncp.poll(port, operating, now) {
+            self.own_sync(now);
+        }
+    }
+
+    // ------------------------------------------------------------------
+    // TIME producer
+    // ------------------------------------------------------------------
+
+    /// `CcmTspSend`: sends one TIME frame on `cob` (bit 29: 29-bit
+    /// identifier; bits 30 and 31, the producer / consumer flags of 0x1012,
+    /// are ignored). kCopNmtStateError unless connected and PRE-OPERATIONAL
+    /// or OPERATIONAL (CiA 301 7.3.2.2), kCopInvalidParam for an identifier
+    /// this node cannot send on, or the driver's code.
+    pub fn send_time_stamp(
+        &mut self,
+        port: &mut impl CanPort,
+        cob: u32,
+        t: TimeOfDay,
+    ) -> CopResult {
+        if !self.operating() {
+            return Err(CopKernel::NmtStateError);
+        }
+        if !syncp::usable_cob_id(cob) {
+            return Err(CopKernel::InvalidParam);
+        }
+        let id = CanId::from_cob_id(cob & !(COB_INVALID | COB_NO_RTR));
+        port.send(&time::encode(id, &t), Priority::Low)
+    }
+
+    // ------------------------------------------------------------------
+    // Store / restore
+    // ------------------------------------------------------------------
+
+    /// The store / restore bookkeeping.
+    pub fn store(&self) -> &StoreRestore {
+        &self.store
+    }
+
+    /// `CcmInitStore`: kCopCcmStoreHwError, always — this library has no
+    /// non-volatile storage. Restoring defaults (0x1011) works without it.
+    pub fn init_store(&mut self) -> CopResult {
+        Err(CopKernel::CcmStoreHwError)
+    }
+
+    /// `CcmStoreCheckArchivState`: kCopObdIllegalPart for a `part` that is
+    /// not a combination of `kObdPart*` bits, else kCopCcmStoreHwError: no
+    /// archive exists (the application configures its defaults).
+    pub fn check_archive(&self, part: u32) -> CopResult {
+        store::check_part(part)?;
+        Err(CopKernel::CcmStoreHwError)
+    }
+
+    /// `CcmStoreRestoreDefault`: there are no stored parameters to delete;
+    /// as with "load" on 0x1011 sub 1, every part is restored to its
+    /// defaults at the next reset (which every reset of this library does).
+    pub fn restore_default(&mut self) -> CopResult {
+        self.store.request_restore(store::part::ALL_PARTS);
+        Ok(())
+    }
+}

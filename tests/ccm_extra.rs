@@ -1,0 +1,936 @@
+//! Whole-stack tests of the smaller CCM services on the simulated bus:
+//! emergency consumer, pre-defined error field, life guarding slave, SYNC
+//! producer, TIME producer, store / restore.
+//!
+//! Node A (ID 2) has every object these services use (0x1003, 0x1005,
+//! 0x1006, 0x100C, 0x100D, 0x1010, 0x1011, 0x1014, 0x1017) and a
+//! synchronous TPDO 1 (type 1) mapping 0x2000; node B (ID 1) has only the
+//! error register, 0x1017 and the same TPDO, so its services keep their
+//! parameters themselves. Frame layouts: CiA 301 7.2.5 (SYNC), 7.2.6 (TIME),
+//! 7.2.7.3.1 (EMCY), 7.2.8.3.2.1 (node guarding), 7.2.4.3 (SDO expedited
+//! download); emergency codes CiA 301 table 21; 0x1003 / 0x1010 / 0x1011
+//! semantics CiA 301 7.5.2.4 / .13 / .14.
+
+use core::sync::atomic::AtomicU8;
+
+use cop::ccm::{NmtCommand, Stack};
+use cop::error::{CopKernel, OdError, SdoAbort};
+use cop::event::{ErrCtrlEvent, Event, NmtState};
+use cop::od::{Access, ByteOrder, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
+use cop::pdo::PDO_MAX_MAPPENTRIES;
+use cop::pdo::decl::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
+use cop::port::{CanFrame, CanId, Ticks};
+use cop::sim::{SimBus, SimPort};
+use cop::store::{self, part};
+use cop::wire::emcy::{self, Emergency};
+use cop::wire::time::TimeOfDay;
+
+/// TPDO 1 (0x180, type 1 = every SYNC) mapping 0x2000 (U8), and 0x2000.
+macro_rules! sync_tpdo {
+    () => {
+        static V1800: CommuVars = CommuVars::new();
+        static D1800: CommuDefaults = CommuDefaults::new(0x180, 1, 0, 0);
+        static S1800: [ObdSubEntry; 5] = commu_subs(&V1800, &D1800);
+        static V1A00: MappVars = MappVars::new();
+        static D1A00: MappDefaults = MappDefaults::new(&[0x2000_0008]);
+        static S1A00: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1A00, &D1A00);
+        static V2000: [AtomicU8; 1] = decl::zeroed();
+        static S2000: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+            0,
+            DataType::UInt8,
+            Access::PRW,
+            &V2000,
+            Some(&[0]),
+        )];
+        static ERR_REG: [AtomicU8; 1] = decl::zeroed();
+        static S1001: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+            0,
+            DataType::UInt8,
+            Access::R,
+            &ERR_REG,
+            Some(&[0]),
+        )];
+        static HB: [AtomicU8; 2] = decl::zeroed();
+        static S1017: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+            0,
+            DataType::UInt16,
+            Access::SRW,
+            &HB,
+            Some(&[0, 0]),
+        )];
+    };
+}
+
+mod node_a {
+    use super::*;
+
+    sync_tpdo!();
+
+    static ERRORS: [[AtomicU8; 4]; 4] = [const { decl::zeroed() }; 4];
+    static ERROR_COUNT: [AtomicU8; 1] = decl::zeroed();
+    static S1003: [ObdSubEntry; 5] = [
+        ObdSubEntry::ram(0, DataType::UInt8, Access::RW, &ERROR_COUNT, Some(&[0])),
+        ObdSubEntry::ram(1, DataType::UInt32, Access::R, &ERRORS[0], Some(&[0; 4])),
+        ObdSubEntry::ram(2, DataType::UInt32, Access::R, &ERRORS[1], Some(&[0; 4])),
+        ObdSubEntry::ram(3, DataType::UInt32, Access::R, &ERRORS[2], Some(&[0; 4])),
+        ObdSubEntry::ram(4, DataType::UInt32, Access::R, &ERRORS[3], Some(&[0; 4])),
+    ];
+    static SYNC_COB: [AtomicU8; 4] = decl::zeroed();
+    static SYNC_COB_DEF: [u8; 4] = 0x80u32.to_ne_bytes();
+    static S1005: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+        0,
+        DataType::UInt32,
+        Access::SRW,
+        &SYNC_COB,
+        Some(&SYNC_COB_DEF),
+    )];
+    static CYCLE: [AtomicU8; 4] = decl::zeroed();
+    static S1006: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+        0,
+        DataType::UInt32,
+        Access::SRW,
+        &CYCLE,
+        Some(&[0; 4]),
+    )];
+    static GUARD: [AtomicU8; 2] = decl::zeroed();
+    static S100C: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+        0,
+        DataType::UInt16,
+        Access::SRW,
+        &GUARD,
+        Some(&[0; 2]),
+    )];
+    static FACTOR: [AtomicU8; 1] = decl::zeroed();
+    static S100D: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+        0,
+        DataType::UInt8,
+        Access::SRW,
+        &FACTOR,
+        Some(&[0]),
+    )];
+    // 0x1010 / 0x1011 as typical objdict.h files declare them: "saves on
+    // command" / "restores" (1) as defaults.
+    static ONE: [u8; 4] = 1u32.to_ne_bytes();
+    static SAVE: [[AtomicU8; 4]; 3] = [const { decl::zeroed() }; 3];
+    static S1010: [ObdSubEntry; 4] = [
+        ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[3]),
+        ObdSubEntry::ram(1, DataType::UInt32, Access::RW, &SAVE[0], Some(&ONE)),
+        ObdSubEntry::ram(2, DataType::UInt32, Access::RW, &SAVE[1], Some(&ONE)),
+        ObdSubEntry::ram(3, DataType::UInt32, Access::RW, &SAVE[2], Some(&ONE)),
+    ];
+    static LOAD: [[AtomicU8; 4]; 3] = [const { decl::zeroed() }; 3];
+    static S1011: [ObdSubEntry; 4] = [
+        ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[3]),
+        ObdSubEntry::ram(1, DataType::UInt32, Access::RW, &LOAD[0], Some(&ONE)),
+        ObdSubEntry::ram(2, DataType::UInt32, Access::RW, &LOAD[1], Some(&ONE)),
+        ObdSubEntry::ram(3, DataType::UInt32, Access::RW, &LOAD[2], Some(&ONE)),
+    ];
+    static EMCY_COB: [AtomicU8; 4] = decl::zeroed();
+    static EMCY_COB_DEF: [u8; 4] = 0x80u32.to_ne_bytes();
+    static S1014: [ObdSubEntry; 1] = [ObdSubEntry::ram(
+        0,
+        DataType::UInt32,
+        Access::SRW,
+        &EMCY_COB,
+        Some(&EMCY_COB_DEF),
+    )];
+
+    static GENERIC: [ObdEntry; 12] = [
+        ObdEntry::new(0x1001, &S1001, None),
+        ObdEntry::new(0x1003, &S1003, None),
+        ObdEntry::new(0x1005, &S1005, None),
+        ObdEntry::new(0x1006, &S1006, None),
+        ObdEntry::new(0x100C, &S100C, None),
+        ObdEntry::new(0x100D, &S100D, None),
+        ObdEntry::new(0x1010, &S1010, None),
+        ObdEntry::new(0x1011, &S1011, None),
+        ObdEntry::new(0x1014, &S1014, None),
+        ObdEntry::new(0x1017, &S1017, None),
+        ObdEntry::new(0x1800, &S1800, None),
+        ObdEntry::new(0x1A00, &S1A00, None),
+    ];
+    static MANUFACTURER: [ObdEntry; 1] = [ObdEntry::new(0x2000, &S2000, None)];
+
+    pub fn od() -> ObjectDictionary {
+        ObjectDictionary::new(&GENERIC, &MANUFACTURER, &[]).unwrap()
+    }
+}
+
+mod node_b {
+    use super::*;
+
+    sync_tpdo!();
+
+    static GENERIC: [ObdEntry; 4] = [
+        ObdEntry::new(0x1001, &S1001, None),
+        ObdEntry::new(0x1017, &S1017, None),
+        ObdEntry::new(0x1800, &S1800, None),
+        ObdEntry::new(0x1A00, &S1A00, None),
+    ];
+    static MANUFACTURER: [ObdEntry; 1] = [ObdEntry::new(0x2000, &S2000, None)];
+
+    pub fn od() -> ObjectDictionary {
+        ObjectDictionary::new(&GENERIC, &MANUFACTURER, &[]).unwrap()
+    }
+}
+
+/// The dictionaries are statics shared by every test of this file.
+static SERIAL: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+const ID_A: u8 = 2;
+const ID_B: u8 = 1;
+
+struct Node {
+    stack: Stack,
+    port: SimPort,
+    events: Vec<Event>,
+}
+
+impl Node {
+    fn new(bus: &SimBus, od: ObjectDictionary, id: u8) -> Node {
+        let mut n = Node {
+            stack: Stack::new(od, id).unwrap(),
+            port: bus.attach(64),
+            events: Vec::new(),
+        };
+        n.drain();
+        n.stack.connect().unwrap();
+        n.drain();
+        n
+    }
+
+    fn now(&self) -> Ticks {
+        self.port.bus().now()
+    }
+
+    fn drain(&mut self) {
+        let now = self.now();
+        while let Some(e) = self.stack.drain(&mut self.port, now) {
+            self.events.push(e);
+        }
+    }
+
+    fn cycle(&mut self) {
+        let now = self.now();
+        let mut ev = Vec::new();
+        self.stack.process(&mut self.port, now, |_, e| ev.push(e));
+        self.events.extend(ev);
+    }
+
+    fn command(&mut self, cmd: NmtCommand) {
+        self.stack.exec_command(cmd).unwrap();
+        self.drain();
+    }
+
+    fn write(&mut self, index: u16, sub: u8, v: u32, len: usize) -> Result<(), OdError> {
+        let now = self.now();
+        let r = self
+            .stack
+            .write_object(index, sub, ByteOrder::Wire, &v.to_le_bytes()[..len], now);
+        self.drain();
+        r
+    }
+
+    fn read(&self, index: u16, sub: u8) -> u64 {
+        self.stack.od().read_uint(index, sub).unwrap()
+    }
+
+    fn send_emergency(&mut self, code: u16, register: u8) -> Emergency {
+        let e = Emergency {
+            code,
+            register,
+            manufacturer: [1, 2, 3, 4, 5],
+        };
+        let now = self.now();
+        self.stack.send_emergency(&mut self.port, now, e).unwrap();
+        e
+    }
+
+    fn take_emcc(&mut self) -> Vec<(u8, Emergency)> {
+        let v = self
+            .events
+            .iter()
+            .filter_map(|e| match e {
+                Event::Emcc(n, em) => Some((*n, *em)),
+                _ => None,
+            })
+            .collect();
+        self.events.clear();
+        v
+    }
+}
+
+struct Net {
+    bus: SimBus,
+    a: Node,
+    b: Node,
+    _guard: std::sync::MutexGuard<'static, ()>,
+}
+
+impl Net {
+    /// Both nodes PRE-OPERATIONAL, trace empty.
+    fn new() -> Net {
+        let guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+        let bus = SimBus::new();
+        let a = Node::new(&bus, node_a::od(), ID_A);
+        let b = Node::new(&bus, node_b::od(), ID_B);
+        bus.clear_trace();
+        let mut net = Net {
+            bus,
+            a,
+            b,
+            _guard: guard,
+        };
+        net.a.events.clear();
+        net.b.events.clear();
+        net
+    }
+
+    /// Advances the bus by `ms` milliseconds, one cycle per node and ms.
+    fn run(&mut self, ms: u32) {
+        for _ in 0..ms {
+            self.bus.advance_ms(1);
+            self.step();
+        }
+    }
+
+    /// One cycle per node without advancing the time.
+    fn step(&mut self) {
+        self.a.cycle();
+        self.b.cycle();
+    }
+
+    /// (time, payload) of every data frame with identifier `id` so far.
+    fn frames(&self, id: u32) -> Vec<(u32, Vec<u8>)> {
+        self.bus
+            .sent()
+            .into_iter()
+            .filter(|(_, _, f)| f.id.id() == id && !f.rtr)
+            .map(|(_, t, f)| (t.0, f.payload().to_vec()))
+            .collect()
+    }
+
+    /// An NMT master's guard request to `node`.
+    fn guard(&mut self, node: u8) {
+        self.bus.inject(CanFrame::remote(
+            CanId::std_masked(0x700 + u16::from(node)),
+            1,
+        ));
+        self.step();
+    }
+
+    /// An SDO client's expedited download of `len` bytes to `node`;
+    /// returns the server's answer (CiA 301 7.2.4.3.3 / 7.2.4.3.17).
+    fn sdo_download(&mut self, node: u8, index: u16, sub: u8, v: u32, len: usize) -> [u8; 8] {
+        let cs = match len {
+            1 => 0x2F,
+            2 => 0x2B,
+            _ => 0x23,
+        };
+        let i = index.to_le_bytes();
+        let d = v.to_le_bytes();
+        let before = self.bus.sent().len();
+        self.bus.inject(CanFrame::new(
+            CanId::std_masked(0x600 + u16::from(node)),
+            &[cs, i[0], i[1], sub, d[0], d[1], d[2], d[3]],
+        ));
+        self.step();
+        self.bus.sent()[before..]
+            .iter()
+            .find(|(_, _, f)| f.id.id() == 0x580 + u32::from(node))
+            .map(|(_, _, f)| f.data)
+            .expect("SDO answer")
+    }
+}
+
+fn abort(index: u16, sub: u8, code: u32) -> [u8; 8] {
+    let i = index.to_le_bytes();
+    let c = code.to_le_bytes();
+    [0x80, i[0], i[1], sub, c[0], c[1], c[2], c[3]]
+}
+
+fn confirmed(index: u16, sub: u8) -> [u8; 8] {
+    let i = index.to_le_bytes();
+    [0x60, i[0], i[1], sub, 0, 0, 0, 0]
+}
+
+// ---------------------------------------------------------------------------
+// Emergency consumer
+// ---------------------------------------------------------------------------
+
+#[test]
+fn emergency_consumer_reports_listed_producers_only() {
+    let mut net = Net::new();
+    let Net { a, b, .. } = &mut net;
+    b.stack.define_emcc_producers(&mut b.port, &[ID_A]).unwrap();
+    // Not yet initialised: nothing is reported.
+    a.send_emergency(0x1000, 0x01);
+    net.step();
+    assert!(net.b.take_emcc().is_empty());
+
+    net.b.stack.init_emcc();
+    let e = net.a.send_emergency(0x8130, 0x11);
+    // CiA 301 7.2.7.3.1: 0x80 + node-ID, code LSB first, register, 5 bytes.
+    assert_eq!(
+        net.frames(0x82).last().map(|f| f.1.clone()),
+        Some(vec![0x30, 0x81, 0x11, 1, 2, 3, 4, 5])
+    );
+    net.step();
+    assert_eq!(net.b.take_emcc(), vec![(ID_A, e)]);
+
+    // An unlisted producer, a frame that is not DLC 8, a remote frame.
+    let other = emcy::encode(CanId::std_masked(0x85), &e);
+    net.bus.inject(other);
+    net.bus
+        .inject(CanFrame::new(CanId::std_masked(0x82), &[0x30, 0x81, 0x11]));
+    net.bus.inject(CanFrame::remote(CanId::std_masked(0x82), 8));
+    net.step();
+    assert!(net.b.take_emcc().is_empty());
+
+    // The table is replaced as a whole: node 5 now, node 2 no longer.
+    let Net { b, .. } = &mut net;
+    b.stack.define_emcc_producers(&mut b.port, &[5]).unwrap();
+    net.bus.inject(other);
+    let e2 = net.a.send_emergency(0x5000, 0x01);
+    net.step();
+    assert_eq!(net.b.take_emcc(), vec![(5, e)]);
+    let _ = e2;
+
+    // STOPPED: EMCY is not served (CiA 301 7.3.2.2).
+    net.b.command(NmtCommand::StopRemoteNode);
+    net.bus.inject(other);
+    net.step();
+    net.b.command(NmtCommand::EnterPreOperational);
+    net.step();
+    assert!(net.b.take_emcc().is_empty());
+}
+
+#[test]
+fn emergency_consumer_table_codes() {
+    let mut net = Net::new();
+    let Net { b, .. } = &mut net;
+    let (stack, port) = (&mut b.stack, &mut b.port);
+    let too_many: Vec<u8> = (10..10 + cop::emcc::CAPACITY as u8 + 1).collect();
+    assert_eq!(
+        stack.define_emcc_producers(port, &too_many),
+        Err(CopKernel::EmccNoFreeProducerEntry)
+    );
+    assert_eq!(
+        stack.define_emcc_producers(port, &[0]),
+        Err(CopKernel::EmccNodeIdInvalid)
+    );
+    assert_eq!(
+        stack.define_emcc_producers(port, &[ID_B]),
+        Err(CopKernel::EmccNodeIdInvalid),
+        "own node-ID"
+    );
+    assert_eq!(
+        stack.define_emcc_producers(port, &[3, 4, 3]),
+        Err(CopKernel::EmccNodeIdExist)
+    );
+    assert_eq!(stack.emcc().producers().count(), 0);
+    let full: Vec<u8> = (10..10 + cop::emcc::CAPACITY as u8).collect();
+    stack.define_emcc_producers(port, &full).unwrap();
+    assert_eq!(stack.emcc().producers().collect::<Vec<_>>(), full);
+    // The same table again (every reset communication) is fine.
+    stack.define_emcc_producers(port, &full).unwrap();
+}
+
+// ---------------------------------------------------------------------------
+// Pre-defined error field
+// ---------------------------------------------------------------------------
+
+#[test]
+fn error_field_is_cleared_by_api_and_by_writing_zero() {
+    let mut net = Net::new();
+    net.a.send_emergency(0x1000, 0x01);
+    net.a.send_emergency(0x8130, 0x11);
+    assert_eq!(net.a.read(0x1003, 0), 2);
+    // Newest at sub 1: code in the low word, manufacturer bytes 0-1 above.
+    assert_eq!(net.a.read(0x1003, 1), 0x0201_8130);
+    assert_eq!(net.a.read(0x1003, 2), 0x0201_1000);
+    assert_eq!(net.a.read(0x1001, 0), 0x11);
+
+    net.a.stack.clear_error_field().unwrap();
+    assert_eq!(net.a.read(0x1003, 0), 0);
+    assert_eq!(net.a.read(0x1003, 1), 0);
+    assert_eq!(net.a.read(0x1003, 2), 0);
+    assert_eq!(net.a.read(0x1001, 0), 0);
+
+    // Over SDO (CiA 301 7.5.2.4): a non-zero count is refused, 0 clears.
+    net.a.send_emergency(0x1000, 0x01);
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1003, 0, 1, 1),
+        abort(0x1003, 0, 0x0609_0030)
+    );
+    assert_eq!(net.a.read(0x1003, 0), 1);
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1003, 0, 0, 1),
+        confirmed(0x1003, 0)
+    );
+    assert_eq!(net.a.read(0x1003, 0), 0);
+    assert_eq!(net.a.read(0x1003, 1), 0);
+    assert_eq!(net.a.read(0x1001, 0), 0);
+    // The entries themselves are read-only.
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1003, 1, 0, 4),
+        abort(0x1003, 1, SdoAbort::WriteReadOnly.code())
+    );
+    assert_eq!(
+        net.a.write(0x1003, 0, 3, 1),
+        Err(OdError::new(CopKernel::InvalidParam, SdoAbort::ValueRange))
+    );
+    // A node without 0x1003 has nothing to clear.
+    assert_eq!(
+        net.b.stack.clear_error_field(),
+        Err(CopKernel::ObdIndexNotExist)
+    );
+}
+
+// ---------------------------------------------------------------------------
+// Life guarding slave
+// ---------------------------------------------------------------------------
+
+fn emcy_frames(net: &Net, node: u8) -> Vec<Vec<u8>> {
+    net.frames(0x80 + u32::from(node))
+        .into_iter()
+        .map(|f| f.1)
+        .collect()
+}
+
+/// With `NMTS_USE_LIFEGUARDING` FALSE (`COP_NMTS_USE_LIFEGUARDING=0`)
+/// `CcmInitLgs` does not exist in C and the module never acts.
+fn life_guarding_built_in(net: &mut Net) -> bool {
+    if cop::config::NMTS_USE_LIFEGUARDING {
+        return true;
+    }
+    net.a.stack.init_lgs();
+    assert!(!net.a.stack.lgs().is_initialised());
+    let now = net.a.now();
+    net.a.stack.config_lgs(10, 2, now).unwrap();
+    net.guard(ID_A);
+    net.run(100);
+    assert!(emcy_frames(net, ID_A).is_empty());
+    false
+}
+
+#[test]
+fn life_guarding_reports_a_lost_master_once_per_loss() {
+    let mut net = Net::new();
+    if !life_guarding_built_in(&mut net) {
+        return;
+    }
+    net.a.stack.init_lgs();
+    let now = net.a.now();
+    net.a.stack.config_lgs(100, 3, now).unwrap();
+    assert_eq!((net.a.read(0x100C, 0), net.a.read(0x100D, 0)), (100, 3));
+    assert_eq!(net.a.stack.lgs().life_time_ticks(), 3000);
+
+    // Supervision starts with the first guard request, not before.
+    net.run(1000);
+    assert!(emcy_frames(&net, ID_A).is_empty());
+    assert_eq!(net.a.stack.lgs().status(), ErrCtrlEvent::Idle);
+    net.guard(ID_A);
+    // The answer: state PRE-OPERATIONAL (0x7F), toggle bit 0.
+    assert_eq!(net.frames(0x702), vec![(10_000, vec![0x7F])]);
+    assert_eq!(net.a.stack.lgs().status(), ErrCtrlEvent::LgConnected);
+    for _ in 0..5 {
+        net.run(100);
+        net.guard(ID_A);
+    }
+    assert!(emcy_frames(&net, ID_A).is_empty());
+
+    // The master falls silent: at the life time still in time, then lost.
+    net.run(300);
+    assert!(emcy_frames(&net, ID_A).is_empty());
+    net.bus.advance_ticks(1);
+    net.step();
+    // EMCY 0x8130, error register generic + communication (CiA 301).
+    assert_eq!(
+        emcy_frames(&net, ID_A),
+        vec![vec![0x30, 0x81, 0x11, 0, 0, 0, 0, 0]]
+    );
+    assert_eq!(net.a.stack.lgs().status(), ErrCtrlEvent::LgLostConnection);
+    assert_eq!(net.a.read(0x1003, 0), 1);
+    assert_eq!(net.a.read(0x1003, 1), 0x8130);
+    assert_eq!(net.a.read(0x1001, 0), 0x11);
+    net.run(1000);
+    assert_eq!(emcy_frames(&net, ID_A).len(), 1, "reported once");
+
+    // The master returns: connected again; a second loss is reported again.
+    net.guard(ID_A);
+    assert_eq!(net.a.stack.lgs().status(), ErrCtrlEvent::LgConnected);
+    net.run(301);
+    assert_eq!(emcy_frames(&net, ID_A).len(), 2);
+}
+
+#[test]
+fn life_guarding_in_stopped_is_recorded_not_sent() {
+    let mut net = Net::new();
+    if !life_guarding_built_in(&mut net) {
+        return;
+    }
+    net.a.stack.init_lgs();
+    let now = net.a.now();
+    net.a.stack.config_lgs(10, 2, now).unwrap();
+    net.a.command(NmtCommand::StopRemoteNode);
+    net.guard(ID_A);
+    // Guarding is served in STOPPED: state 0x04.
+    assert_eq!(
+        net.frames(0x702).last().map(|f| f.1.clone()),
+        Some(vec![0x04])
+    );
+    net.run(21);
+    assert_eq!(net.a.stack.lgs().status(), ErrCtrlEvent::LgLostConnection);
+    assert!(emcy_frames(&net, ID_A).is_empty());
+    assert_eq!(net.a.read(0x1003, 1), 0x8130);
+    assert_eq!(net.a.read(0x1001, 0), 0x11);
+}
+
+#[test]
+fn life_guarding_and_heartbeat_exclude_each_other() {
+    let mut net = Net::new();
+    if !life_guarding_built_in(&mut net) {
+        return;
+    }
+    let now = net.a.now();
+    // Before CcmInitLgs life guarding is not configured.
+    net.a.stack.config_lgs(100, 3, now).unwrap();
+    net.a.stack.config_hbp(100, now).unwrap();
+    net.a.stack.config_hbp(0, now).unwrap();
+
+    net.a.stack.init_lgs();
+    assert_eq!(
+        net.a.stack.config_hbp(100, now),
+        Err(CopKernel::NmtLifeguardVsHeartbeat)
+    );
+    assert_eq!(net.a.read(0x1017, 0), 0);
+    net.a.stack.config_lgs(0, 0, now).unwrap();
+    net.a.stack.config_hbp(100, now).unwrap();
+    assert_eq!(
+        net.a.stack.config_lgs(100, 3, now),
+        Err(CopKernel::NmtLifeguardVsHeartbeat)
+    );
+    assert_eq!((net.a.read(0x100C, 0), net.a.read(0x100D, 0)), (0, 0));
+    // Life time 0 is always accepted.
+    net.a.stack.config_lgs(100, 0, now).unwrap();
+
+    // Over SDO nothing is refused; heartbeat takes precedence (CiA 301
+    // 7.2.8.3.2): life guarding stays suspended while 0x1017 is not 0.
+    assert_eq!(
+        net.sdo_download(ID_A, 0x100D, 0, 3, 1),
+        confirmed(0x100D, 0)
+    );
+    assert!(net.a.stack.lgs().is_configured());
+    net.guard(ID_A);
+    net.run(1000);
+    assert!(emcy_frames(&net, ID_A).is_empty());
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1017, 0, 0, 2),
+        confirmed(0x1017, 0)
+    );
+    net.guard(ID_A);
+    net.run(301);
+    assert_eq!(emcy_frames(&net, ID_A).len(), 1);
+}
+
+#[test]
+fn life_guarding_without_objects_keeps_its_values_until_reset_communication() {
+    let mut net = Net::new();
+    if !life_guarding_built_in(&mut net) {
+        return;
+    }
+    net.b.stack.init_lgs();
+    let now = net.b.now();
+    net.b.stack.config_lgs(50, 2, now).unwrap();
+    assert_eq!(net.b.stack.lgs().config(), (50, 2));
+    net.guard(ID_B);
+    net.run(100);
+    assert!(emcy_frames(&net, ID_B).is_empty());
+    net.run(1);
+    assert_eq!(
+        emcy_frames(&net, ID_B),
+        vec![vec![0x30, 0x81, 0x11, 0, 0, 0, 0, 0]]
+    );
+    net.b.command(NmtCommand::ResetCommunication);
+    assert_eq!(net.b.stack.lgs().config(), (0, 0));
+    assert_eq!(net.b.stack.lgs().status(), ErrCtrlEvent::Idle);
+    // CcmInitLgs stays in force (it is called once, at initialisation).
+    assert!(net.b.stack.lgs().is_initialised());
+}
+
+// ---------------------------------------------------------------------------
+// SYNC producer
+// ---------------------------------------------------------------------------
+
+#[test]
+fn sync_producer_sends_every_cycle_and_triggers_its_own_pdos() {
+    let mut net = Net::new();
+    let now = net.a.now();
+    net.a
+        .stack
+        .config_sync_producer(0x4000_0080, 10_000, now)
+        .unwrap();
+    assert_eq!(net.a.read(0x1005, 0), 0x4000_0080);
+    assert_eq!(net.a.read(0x1006, 0), 10_000);
+    net.run(30);
+    // PRE-OPERATIONAL: SYNC (DLC 0) every 10 ms, no PDO.
+    assert_eq!(
+        net.frames(0x80),
+        vec![(100, vec![]), (200, vec![]), (300, vec![])]
+    );
+    assert!(net.frames(0x182).is_empty());
+
+    net.a.command(NmtCommand::StartRemoteNode);
+    net.b.command(NmtCommand::StartRemoteNode);
+    net.a.write(0x2000, 0, 0xA5, 1).unwrap();
+    net.bus.clear_trace();
+    net.run(30);
+    assert_eq!(net.frames(0x80).len(), 3);
+    // Every SYNC of A is followed, at the same time, by A's own synchronous
+    // TPDO (its controller never receives the SYNC) and B's.
+    let sent: Vec<(usize, u32, u32)> = net
+        .bus
+        .sent()
+        .into_iter()
+        .map(|(from, t, f)| (from, t.0, f.id.id()))
+        .collect();
+    assert_eq!(
+        sent,
+        vec![
+            (0, 400, 0x80),
+            (0, 400, 0x182),
+            (1, 400, 0x181),
+            (0, 500, 0x80),
+            (0, 500, 0x182),
+            (1, 500, 0x181),
+            (0, 600, 0x80),
+            (0, 600, 0x182),
+            (1, 600, 0x181),
+        ]
+    );
+    assert_eq!(net.frames(0x182)[0].1, vec![0xA5]);
+
+    // STOPPED: no SYNC.
+    net.a.command(NmtCommand::StopRemoteNode);
+    net.bus.clear_trace();
+    net.run(30);
+    assert!(net.frames(0x80).is_empty());
+    net.a.command(NmtCommand::StartRemoteNode);
+
+    // Over SDO: bit 30 cleared stops production, set again restarts it;
+    // cycle period 0 stops it too.
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1005, 0, 0x80, 4),
+        confirmed(0x1005, 0)
+    );
+    net.bus.clear_trace();
+    net.run(30);
+    assert!(net.frames(0x80).is_empty());
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1005, 0, 0x4000_0080, 4),
+        confirmed(0x1005, 0)
+    );
+    net.run(10);
+    assert_eq!(net.frames(0x80).len(), 1);
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1006, 0, 0, 4),
+        confirmed(0x1006, 0)
+    );
+    net.run(30);
+    assert_eq!(net.frames(0x80).len(), 1);
+}
+
+#[test]
+fn sync_producer_codes_and_rounding() {
+    let mut net = Net::new();
+    let now = net.a.now();
+    // A restricted identifier changes nothing.
+    assert_eq!(
+        net.a.stack.config_sync_producer(0x4000_0701, 1000, now),
+        Err(CopKernel::InvalidParam)
+    );
+    assert_eq!(net.a.read(0x1005, 0), 0x80);
+    // The consumer API does not make this node a producer.
+    assert_eq!(
+        net.a.stack.config_sync_consumer(0x4000_0080, 0, now),
+        Err(CopKernel::InvalidParam)
+    );
+    // 1 050 µs = 10.5 ticks -> 10 ticks (1 ms).
+    net.a
+        .stack
+        .config_sync_producer(0x4000_0080, 1_050, now)
+        .unwrap();
+    assert_eq!(net.a.stack.syncp().period_ticks(), 10);
+    net.run(5);
+    assert_eq!(net.frames(0x80).len(), 5);
+    // 150 µs -> one tick; at most one SYNC per processing cycle.
+    let now = net.a.now();
+    net.a
+        .stack
+        .config_sync_producer(0x4000_0080, 150, now)
+        .unwrap();
+    assert_eq!(net.a.stack.syncp().period_ticks(), 1);
+    net.bus.clear_trace();
+    for _ in 0..10 {
+        net.bus.advance_ticks(1);
+        net.step();
+    }
+    assert_eq!(net.frames(0x80).len(), 10);
+    net.bus.clear_trace();
+    net.run(3);
+    assert_eq!(net.frames(0x80).len(), 3, "one per cycle, no burst");
+}
+
+#[test]
+fn sync_producer_without_objects_keeps_its_values_until_reset_communication() {
+    let mut net = Net::new();
+    let now = net.b.now();
+    net.b
+        .stack
+        .config_sync_producer(0x4000_0085, 5_000, now)
+        .unwrap();
+    assert_eq!(net.b.stack.syncp().config(), (0x4000_0085, 5_000));
+    // One COB-ID for producer and consumer.
+    assert_eq!(
+        net.b.stack.pdo().sync_cob_id(),
+        Some(CanId::std_masked(0x85))
+    );
+    net.run(10);
+    assert_eq!(net.frames(0x85).len(), 2);
+    net.b.command(NmtCommand::ResetCommunication);
+    assert_eq!(net.b.stack.syncp().cob_id(), None);
+    net.bus.clear_trace();
+    net.run(10);
+    assert!(net.frames(0x85).is_empty());
+}
+
+// ---------------------------------------------------------------------------
+// TIME producer
+// ---------------------------------------------------------------------------
+
+#[test]
+fn time_stamp_frame_and_codes() {
+    let mut net = Net::new();
+    // 12:00 on 1 January 2024 (CiA 301 7.1.6.5: ms, then days since 1984).
+    let t = TimeOfDay::new(43_200_000, 14_610).unwrap();
+    let Net { a, .. } = &mut net;
+    a.stack.send_time_stamp(&mut a.port, 0x100, t).unwrap();
+    // Producer flag (bit 30) is ignored.
+    a.stack
+        .send_time_stamp(&mut a.port, 0x4000_0100, t)
+        .unwrap();
+    assert_eq!(
+        net.frames(0x100),
+        vec![
+            (0, vec![0x00, 0x2E, 0x93, 0x02, 0x12, 0x39]),
+            (0, vec![0x00, 0x2E, 0x93, 0x02, 0x12, 0x39])
+        ]
+    );
+    let Net { a, .. } = &mut net;
+    assert_eq!(
+        a.stack.send_time_stamp(&mut a.port, 0x701, t),
+        Err(CopKernel::InvalidParam)
+    );
+    a.command(NmtCommand::StopRemoteNode);
+    assert_eq!(
+        a.stack.send_time_stamp(&mut a.port, 0x100, t),
+        Err(CopKernel::NmtStateError)
+    );
+    // Before CcmConnectToNet.
+    let mut fresh = Stack::new(node_b::od(), 9).unwrap();
+    let mut port = net.bus.attach(4);
+    assert_eq!(
+        fresh.send_time_stamp(&mut port, 0x100, t),
+        Err(CopKernel::NmtStateError)
+    );
+    assert_eq!(net.frames(0x100).len(), 2);
+}
+
+// ---------------------------------------------------------------------------
+// Store / restore
+// ---------------------------------------------------------------------------
+
+#[test]
+fn store_is_refused_and_load_restores_at_the_next_reset() {
+    let mut net = Net::new();
+    // "does not save parameters" although objdict declared 1.
+    assert_eq!(net.a.read(0x1010, 1), 0);
+    assert_eq!(net.a.read(0x1011, 1), 1);
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1010, 1, store::SAVE_SIGNATURE, 4),
+        abort(0x1010, 1, 0x0800_0020)
+    );
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1010, 2, 0x1234_5678, 4),
+        abort(0x1010, 2, 0x0800_0020)
+    );
+    assert_eq!(net.a.read(0x1010, 1), 0);
+    assert_eq!(
+        net.a.write(0x1010, 1, store::SAVE_SIGNATURE, 4),
+        Err(OdError::new(
+            CopKernel::CcmStoreHwError,
+            SdoAbort::CannotStore
+        ))
+    );
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1011, 1, store::SAVE_SIGNATURE, 4),
+        abort(0x1011, 1, 0x0800_0020)
+    );
+    assert_eq!(net.a.stack.store().restore_requested(), 0);
+    // Writing back what the subindices read changes nothing.
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1010, 1, 0, 4),
+        confirmed(0x1010, 1)
+    );
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1011, 2, 1, 4),
+        confirmed(0x1011, 2)
+    );
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1010, 1, 1, 4),
+        abort(0x1010, 1, 0x0800_0020)
+    );
+    assert_eq!(net.a.stack.store().restore_requested(), 0);
+
+    // Changed communication and application values, then "load" all.
+    net.a.write(0x1017, 0, 500, 2).unwrap();
+    net.a.write(0x2000, 0, 0x55, 1).unwrap();
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1011, 1, store::LOAD_SIGNATURE, 4),
+        confirmed(0x1011, 1)
+    );
+    assert_eq!(net.a.read(0x1011, 1), 1);
+    assert_eq!(net.a.stack.store().restore_requested(), part::ALL_PARTS);
+    // Reset communication restores the communication parameters only.
+    net.a.command(NmtCommand::ResetCommunication);
+    assert_eq!(net.a.read(0x1017, 0), 0);
+    assert_eq!(net.a.read(0x2000, 0), 0x55);
+    assert_eq!(net.a.stack.store().restore_requested(), part::APP);
+    // Reset node restores the rest.
+    net.a.command(NmtCommand::ResetNode);
+    assert_eq!(net.a.read(0x2000, 0), 0);
+    assert_eq!(net.a.stack.store().restore_requested(), 0);
+    assert_eq!(net.a.stack.nmt_state(), NmtState::PreOperational);
+}
+
+#[test]
+fn store_functions_tell_that_there_is_no_storage() {
+    let mut net = Net::new();
+    let s = &mut net.a.stack;
+    assert_eq!(s.init_store(), Err(CopKernel::CcmStoreHwError));
+    assert_eq!(
+        s.check_archive(u32::from(part::GEN)),
+        Err(CopKernel::CcmStoreHwError)
+    );
+    assert_eq!(
+        s.check_archive(u32::from(part::ALL_PARTS)),
+        Err(CopKernel::CcmStoreHwError)
+    );
+    assert_eq!(s.check_archive(0), Err(CopKernel::ObdIllegalPart));
+    assert_eq!(s.check_archive(0x10), Err(CopKernel::ObdIllegalPart));
+    s.restore_default().unwrap();
+    assert_eq!(s.store().restore_requested(), part::ALL_PARTS);
+    net.a.command(NmtCommand::ResetNode);
+    assert_eq!(net.a.stack.store().restore_requested(), 0);
+}
