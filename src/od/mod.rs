@@ -139,6 +139,70 @@ impl Object {
     }
 }
 
+/// Subindex `sub` of `entry` ([`ObjectDictionary::find`]).
+#[inline(always)]
+fn find_in_entry(entry: &'static ObdEntry, sub: u8) -> Result<Object, OdError> {
+    // The usual layout: subindex n at position n (an entry without table
+    // takes the general path, which refuses it).
+    let at_n = if entry.m_pSubIndex.is_null() {
+        None
+    } else {
+        entry.subs().get(usize::from(sub))
+    };
+    match at_n {
+        Some(desc) if desc.sub() == sub => object(entry, desc, sub, 0),
+        _ => find_sub(entry, sub),
+    }
+}
+
+/// The object of subindex `sub` described by `desc` (array element
+/// `element`); `kCopObdSubindexNotExist` for a data type this library does
+/// not know.
+#[inline(always)]
+fn object(
+    entry: &'static ObdEntry,
+    desc: &'static ObdSubEntry,
+    sub: u8,
+    element: u8,
+) -> Result<Object, OdError> {
+    match TYPE_OF_CODE.get(usize::from(desc.m_bType)) {
+        Some(Some(typ)) => Ok(Object {
+            entry,
+            desc,
+            typ: *typ,
+            sub,
+            element,
+        }),
+        _ => Err(OdError::SUBINDEX),
+    }
+}
+
+/// [`DataType::from_code`] for every byte value, as a table.
+// Evaluated at compile time: an index out of bounds would not compile.
+#[allow(clippy::indexing_slicing)]
+const TYPE_OF_CODE: [Option<DataType>; 256] = {
+    let mut table = [None; 256];
+    let mut code = 0;
+    while code < 256 {
+        table[code] = DataType::from_code(code as u16);
+        code += 1;
+    }
+    table
+};
+
+/// [`Entry::find`] for a subindex that is not at its own position in the
+/// table: searched among the subindices, else an element of a trailing
+/// array.
+#[inline(never)]
+fn find_sub(entry: &'static ObdEntry, sub: u8) -> Result<Object, OdError> {
+    let subs = entry.subs();
+    let (desc, element) = match subs.binary_search_by_key(&sub, |s| s.sub()) {
+        Ok(i) => (subs.get(i).ok_or(OdError::SUBINDEX)?, 0u8),
+        Err(_) => array_element(entry, sub).ok_or(OdError::SUBINDEX)?,
+    };
+    object(entry, desc, sub, element)
+}
+
 /// A value checked and converted for storing.
 #[derive(Clone, Copy, Debug)]
 pub struct Staged {
@@ -203,7 +267,238 @@ impl WriteHooks for NoHooks {
 /// The object dictionary.
 #[derive(Clone, Copy, Debug)]
 pub struct ObjectDictionary {
-    parts: [&'static [ObdEntry]; 4],
+    /// Generic, manufacturer, device and user part ([`Part::slot`]).
+    parts: [PartTable; 4],
+}
+
+/// Number of index ranges of a part's lookup directory ([`PartTable`]).
+const RANGES: usize = 32;
+
+/// [`PartTable::window`] when the whole table is searched.
+const WHOLE: u8 = 0xFF;
+/// [`PartTable::fast`]: windows of 16 entries (the common size, tested
+/// first).
+const FAST_16: u8 = 0x01;
+/// [`PartTable::fast`]: windows of 8 entries.
+const FAST_8: u8 = 0x02;
+/// [`PartTable::fast`]: windows of 4 entries.
+const FAST_4: u8 = 0x04;
+/// [`PartTable::fast`]: tables of at most 8 entries, searched whole.
+const FAST_SMALL: u8 = 0x08;
+
+/// One part: its sorted table and a lookup directory computed when the
+/// table is checked.
+///
+/// The span from the part's first to its last index is cut into [`RANGES`]
+/// ranges of `1 << shift` indices. Every range holds at most `1 << window`
+/// entries, so the entry of an index lies in the `1 << window` entries from
+/// the first entry of its range; `starts` holds that position for each
+/// range, moved back where needed so that the window ends within the table.
+/// A lookup takes its range in constant time and binary-searches a window
+/// of a power of two entries (fixed probe positions, no bounds to track).
+/// The window is never larger than the table, so the search stays
+/// O(log n) whatever the distribution of indices, and when they are spread
+/// over the part it saves up to five of the comparisons of a search of the
+/// whole table. Tables whose ranges do not fit (few entries in one
+/// cluster) are searched whole.
+#[derive(Clone, Copy, Debug)]
+struct PartTable {
+    /// The entries, indices strictly ascending.
+    table: &'static [ObdEntry],
+    /// Index of the first entry.
+    base: u16,
+    /// Range of `index` = `(index - base) >> shift` (wrapping; 0..=11).
+    shift: u8,
+    /// log2 of the window size, or [`WHOLE`].
+    window: u8,
+    /// [`FAST_16`], [`FAST_8`] or [`FAST_SMALL`] for the parts searched by
+    /// [`PartTable::find_windowed`], else 0.
+    fast: u8,
+    /// First position of the window of each range.
+    starts: [u16; RANGES],
+}
+
+impl PartTable {
+    /// An empty part.
+    const EMPTY: PartTable = PartTable {
+        table: &[],
+        base: 0,
+        shift: 0,
+        window: WHOLE,
+        fast: 0,
+        starts: [0; RANGES],
+    };
+
+    /// The part of a sorted table (checked by [`validate_part`]).
+    fn new(table: &'static [ObdEntry]) -> PartTable {
+        let (Some(first), Some(last)) = (table.first(), table.last()) else {
+            return PartTable::EMPTY;
+        };
+        let base = first.index();
+        let span = last.index().wrapping_sub(base);
+        let mut shift = 0u8;
+        while usize::from(span >> shift) >= RANGES {
+            shift += 1;
+        }
+        let range_of = |e: &ObdEntry| usize::from(e.index().wrapping_sub(base) >> shift);
+        // Where each range starts, and its largest number of entries.
+        let mut starts = [0usize; RANGES];
+        let mut largest = 0usize;
+        let mut pos = 0usize;
+        for (r, start) in starts.iter_mut().enumerate() {
+            *start = pos;
+            while table.get(pos).is_some_and(|e| range_of(e) == r) {
+                pos += 1;
+            }
+            largest = largest.max(pos - *start);
+        }
+        // Windows of 16 entries where the table is long enough (one compare
+        // more for ranges of up to eight entries, but one window size for
+        // the common case), else as small as the ranges allow.
+        let window = if largest <= 16 && table.len() >= 16 {
+            16
+        } else {
+            largest.max(4).next_power_of_two()
+        };
+        if window > table.len() {
+            return PartTable {
+                table,
+                // Up to eight entries: searched in order.
+                fast: if table.len() <= 8 { FAST_SMALL } else { 0 },
+                ..PartTable::EMPTY
+            };
+        }
+        let last_window = table.len() - window;
+        PartTable {
+            table,
+            base,
+            shift,
+            window: window.trailing_zeros() as u8,
+            fast: match window {
+                16 => FAST_16,
+                8 => FAST_8,
+                4 => FAST_4,
+                _ => 0,
+            },
+            // A window start is at most the table length minus the window,
+            // below 65,536 for any table.
+            starts: starts.map(|s| u16::try_from(s.min(last_window)).unwrap_or(0)),
+        }
+    }
+
+    /// The entry of `index` in this part when its window has 4, 8 or 16
+    /// entries or the table at most 8; `None` when not found or the window
+    /// is another size.
+    #[inline(always)]
+    fn find_windowed(&self, index: u16) -> Option<&'static ObdEntry> {
+        // An index beyond the last range cannot be in the table; taken
+        // modulo the number of ranges it is searched where it cannot match.
+        let r = (usize::from(index.wrapping_sub(self.base)) >> self.shift) % RANGES;
+        let start = usize::from(*self.starts.get(r)?);
+        let table = self.table;
+        // Bit tests (not a switch), so that the common size is tested first.
+        if self.fast & FAST_16 != 0 {
+            search_fixed::<16>(table, start, index)
+        } else if self.fast & FAST_8 != 0 {
+            search_fixed::<8>(table, start, index)
+        } else if self.fast & FAST_4 != 0 {
+            search_fixed::<4>(table, start, index)
+        } else if self.fast & FAST_SMALL != 0 {
+            search_small(table, index)
+        } else {
+            None
+        }
+    }
+
+    /// The entry of `index` in this part.
+    fn find(&self, index: u16) -> Option<&'static ObdEntry> {
+        if self.window == WHOLE {
+            return search(self.table, index);
+        }
+        // An index beyond the last range is not in the table.
+        let r = usize::from(index.wrapping_sub(self.base)) >> self.shift;
+        let start = usize::from(*self.starts.get(r)?);
+        // Windows are at most as long as the table (65,536 entries).
+        let size = 1usize << self.window.min(16);
+        search_window(self.table.get(start..start + size)?, index)
+    }
+}
+
+/// The part slot ([`Part::slot`]) of each index by its top four bits.
+const SLOT_OF_TOP_NIBBLE: [u8; 16] = [3, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3, 3, 3];
+
+/// Binary search of the `W` entries (4, 8 or 16) from `start`: each step keeps
+/// the half that can hold `index`. Written out step by step, because
+/// size-optimised builds do not unroll loops; with the lengths known at
+/// every step there are no bounds to check.
+#[inline(always)]
+fn search_fixed<const W: usize>(
+    table: &'static [ObdEntry],
+    start: usize,
+    index: u16,
+) -> Option<&'static ObdEntry> {
+    let mut window: &'static [ObdEntry] = table.get(start..start + W)?;
+    if W >= 16 {
+        window = half(window, 8, index);
+    }
+    if W >= 8 {
+        window = half(window, 4, index);
+    }
+    window = half(window, 2, index);
+    window = half(window, 1, index);
+    window.first().filter(|e| e.index() == index)
+}
+
+/// Search of a table of at most 8 entries: the first entry not below
+/// `index`, in order.
+#[inline(always)]
+fn search_small(table: &'static [ObdEntry], index: u16) -> Option<&'static ObdEntry> {
+    table
+        .iter()
+        .find(|e| e.index() >= index)
+        .filter(|e| e.index() == index)
+}
+
+/// One step of a binary search over `2 * n` entries: the upper `n` when
+/// their first index is not above `index`, else the lower `n` (over fewer
+/// entries: the upper part when it exists and qualifies, else the lower
+/// `n` or all of them).
+#[inline(always)]
+fn half(window: &'static [ObdEntry], n: usize, index: u16) -> &'static [ObdEntry] {
+    let (low, high) = window.split_at(n.min(window.len()));
+    match high.first() {
+        Some(e) if e.index() <= index => high,
+        _ => low,
+    }
+}
+
+/// Binary search of a window of a power of two entries.
+fn search_window(window: &'static [ObdEntry], index: u16) -> Option<&'static ObdEntry> {
+    let mut pos = 0usize;
+    let mut step = window.len() / 2;
+    while step > 0 {
+        if window.get(pos + step).is_some_and(|e| e.index() <= index) {
+            pos += step;
+        }
+        step /= 2;
+    }
+    window.get(pos).filter(|e| e.index() == index)
+}
+
+/// Binary search of a whole sorted table: a first probe leaves a window of
+/// a power of two entries, which [`search_window`] halves.
+fn search(table: &'static [ObdEntry], index: u16) -> Option<&'static ObdEntry> {
+    let n = table.len();
+    if n == 0 {
+        return None;
+    }
+    let window = 1usize << (usize::BITS - 1 - n.leading_zeros());
+    let start = if table.get(n - window).is_some_and(|e| e.index() <= index) {
+        n - window
+    } else {
+        0
+    };
+    search_window(table.get(start..start + window)?, index)
 }
 
 /// Why a table was refused when the dictionary was created.
@@ -221,7 +516,7 @@ impl ObjectDictionary {
     /// An empty dictionary.
     pub const fn empty() -> Self {
         ObjectDictionary {
-            parts: [&[], &[], &[], &[]],
+            parts: [PartTable::EMPTY; 4],
         }
     }
 
@@ -234,11 +529,10 @@ impl ObjectDictionary {
         manufacturer: &'static [ObdEntry],
         device: &'static [ObdEntry],
     ) -> Result<Self, TableError> {
-        let od = ObjectDictionary {
-            parts: [generic, manufacturer, device, &[]],
-        };
-        for part in &od.parts {
-            validate_part(part)?;
+        let mut od = ObjectDictionary::empty();
+        for (slot, table) in od.parts.iter_mut().zip([generic, manufacturer, device]) {
+            validate_part(table)?;
+            *slot = PartTable::new(table);
         }
         Ok(od)
     }
@@ -246,18 +540,20 @@ impl ObjectDictionary {
     /// Replaces the user part (dynamic OD); checked like the static parts.
     pub fn set_user_part(&mut self, user: &'static [ObdEntry]) -> Result<(), TableError> {
         validate_part(user)?;
-        self.parts[3] = user;
+        if let Some(slot) = self.parts.get_mut(Part::User.slot()) {
+            *slot = PartTable::new(user);
+        }
         Ok(())
     }
 
     /// The table of one part.
     pub fn part(&self, part: Part) -> &'static [ObdEntry] {
-        self.parts.get(part.slot()).copied().unwrap_or(&[])
+        self.parts.get(part.slot()).map_or(&[], |p| p.table)
     }
 
     /// Number of index entries.
     pub fn len(&self) -> usize {
-        self.parts.iter().map(|p| p.len()).sum()
+        self.parts.iter().map(|p| p.table.len()).sum()
     }
 
     /// True for an empty dictionary.
@@ -267,43 +563,65 @@ impl ObjectDictionary {
 
     /// Every index entry, part by part.
     pub fn entries(&self) -> impl Iterator<Item = &'static ObdEntry> + '_ {
-        self.parts.iter().flat_map(|p| p.iter())
+        self.parts.iter().flat_map(|p| p.table.iter())
     }
 
-    /// The index entry of `index`.
+    /// The index entry of `index`: searched in the part its number belongs
+    /// to, then (for indices outside the user part's own range) in the user
+    /// part, where the dynamic OD may have added it.
+    #[inline]
     pub fn find_entry(&self, index: u16) -> Option<&'static ObdEntry> {
-        let part = self.part(Part::of(index));
-        if let Ok(i) = part.binary_search_by_key(&index, |e| e.index()) {
-            return part.get(i);
+        match self.find_entry_fast(index) {
+            Some(e) => Some(e),
+            None => self.find_entry_slow(index),
         }
-        let user = self.part(Part::User);
-        if Part::of(index) != Part::User {
-            if let Ok(i) = user.binary_search_by_key(&index, |e| e.index()) {
-                return user.get(i);
-            }
+    }
+
+    /// The part slot of `index`.
+    #[inline(always)]
+    fn slot_of(index: u16) -> usize {
+        SLOT_OF_TOP_NIBBLE
+            .get(usize::from(index >> 12))
+            .map_or(0, |s| usize::from(*s & 3))
+    }
+
+    /// The common case of [`ObjectDictionary::find_entry`]: the entry in
+    /// its own part, found in a window of 8 or 16 entries. `None` when
+    /// that does not settle it ([`ObjectDictionary::find_entry_slow`]).
+    #[inline(always)]
+    fn find_entry_fast(&self, index: u16) -> Option<&'static ObdEntry> {
+        self.parts.get(Self::slot_of(index))?.find_windowed(index)
+    }
+
+    /// [`ObjectDictionary::find_entry`] without the fast path.
+    #[inline(never)]
+    fn find_entry_slow(&self, index: u16) -> Option<&'static ObdEntry> {
+        let slot = Self::slot_of(index);
+        if let Some(e) = self.parts.get(slot)?.find(index) {
+            return Some(e);
         }
-        None
+        if slot == Part::User.slot() {
+            return None;
+        }
+        self.parts.get(Part::User.slot())?.find(index)
     }
 
     /// Looks up index and subindex.
+    #[inline(never)]
     pub fn find(&self, index: u16, sub: u8) -> Result<Object, OdError> {
-        let entry = self.find_entry(index).ok_or(OdError::INDEX)?;
-        let subs = entry.subs();
-        let (desc, element) = match subs.get(usize::from(sub)) {
-            Some(d) if d.sub() == sub => (d, 0u8),
-            _ => match subs.binary_search_by_key(&sub, |s| s.sub()) {
-                Ok(i) => (subs.get(i).ok_or(OdError::SUBINDEX)?, 0u8),
-                Err(_) => array_element(entry, sub).ok_or(OdError::SUBINDEX)?,
-            },
-        };
-        let typ = desc.data_type().ok_or(OdError::SUBINDEX)?;
-        Ok(Object {
-            entry,
-            desc,
-            typ,
-            sub,
-            element,
-        })
+        match self.find_entry_fast(index) {
+            Some(entry) => find_in_entry(entry, sub),
+            None => self.find_slow(index, sub),
+        }
+    }
+
+    /// [`ObjectDictionary::find`] without the fast path of the index search.
+    #[inline(never)]
+    fn find_slow(&self, index: u16, sub: u8) -> Result<Object, OdError> {
+        match self.find_entry_slow(index) {
+            Some(entry) => find_in_entry(entry, sub),
+            None => Err(OdError::INDEX),
+        }
     }
 
     /// Highest subindex an entry answers (for EDS export and SDO checks).
@@ -801,4 +1119,112 @@ fn validate_part(part: &[ObdEntry]) -> Result<(), TableError> {
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    static SUBS: [ObdSubEntry; 1] = [ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[1])];
+
+    /// The leaked test tables, kept reachable (Miri's leak check).
+    static TABLES: std::sync::Mutex<Vec<&'static [ObdEntry]>> = std::sync::Mutex::new(Vec::new());
+
+    fn table(indices: &[u16]) -> &'static [ObdEntry] {
+        let entries: Vec<ObdEntry> = indices
+            .iter()
+            .map(|&i| ObdEntry::new(i, &SUBS, None))
+            .collect();
+        let table: &'static [ObdEntry] = Box::leak(entries.into_boxed_slice());
+        TABLES.lock().unwrap().push(table);
+        table
+    }
+
+    /// Every index (a sample under Miri) is found exactly where a scan of
+    /// the parts finds it: own part first, then the user part.
+    fn check_against_scan(od: &ObjectDictionary) {
+        let step = if cfg!(miri) { 251 } else { 1 };
+        let map = |part: Part| -> std::collections::HashMap<u16, *const ObdEntry> {
+            od.part(part)
+                .iter()
+                .map(|e| (e.index(), e as *const _))
+                .collect()
+        };
+        let parts = [Part::Generic, Part::Manufacturer, Part::Device, Part::User].map(map);
+        let scan = |index: u16| {
+            let own = &parts[Part::of(index).slot()];
+            own.get(&index).or(parts[3].get(&index)).copied()
+        };
+        let mut probes: Vec<u16> = (0..=0xFFFFu16).step_by(step).collect();
+        for e in od.entries().step_by(if cfg!(miri) { 7 } else { 1 }) {
+            let i = e.index();
+            probes.extend([i, i.wrapping_add(1), i.wrapping_sub(1)]);
+        }
+        for index in probes {
+            let got = od.find_entry(index).map(|e| e as *const ObdEntry);
+            assert_eq!(got, scan(index), "index {index:#06x}");
+            assert_eq!(od.find(index, 0).is_ok(), got.is_some());
+        }
+    }
+
+    #[test]
+    fn part_slots_by_top_nibble_match_part_of() {
+        for index in (0..=0xFFFFu16).step_by(0x100) {
+            let slot = ObjectDictionary::slot_of(index);
+            assert_eq!(slot, Part::of(index).slot(), "index {index:#06x}");
+            assert_eq!(slot, ObjectDictionary::slot_of(index | 0xFF));
+        }
+    }
+
+    #[test]
+    fn lookups_agree_with_a_scan_for_every_table_shape() {
+        let spread = |n: usize, from: u16, span: u16| -> Vec<u16> {
+            (0..n)
+                .map(|i| from + (i * usize::from(span) / n) as u16)
+                .collect()
+        };
+        let shapes: Vec<Vec<u16>> = vec![
+            vec![],
+            vec![0x2000],
+            vec![0x2000, 0x2001],
+            // Few entries (the whole table is searched).
+            spread(7, 0x2000, 0x4000),
+            // Windows of 8 and 16, the sizes of the fast path.
+            spread(12, 0x2000, 0x4000),
+            spread(16, 0x2000, 0x4000),
+            spread(300, 0x2000, 0x4000),
+            // One dense cluster and a few outliers: large windows.
+            (0x2000..0x2000 + 200).chain([0x3000, 0x5FFF]).collect(),
+            // All entries at the ends of the part.
+            (0x2000..0x2010).chain(0x5FF0..=0x5FFF).collect(),
+            spread(if cfg!(miri) { 600 } else { 3000 }, 0x2000, 0x4000),
+        ];
+        for shape in &shapes {
+            let od = ObjectDictionary::new(&[], table(shape), &[]).unwrap();
+            check_against_scan(&od);
+        }
+        // The user part: own indices and objects of the other parts' ranges
+        // (found there only when the own part does not have them).
+        let mut od = ObjectDictionary::new(
+            table(&spread(40, 0x1000, 0x1000)),
+            table(&spread(300, 0x2000, 0x4000)),
+            table(&[0x6000, 0x6001, 0x9FFF]),
+        )
+        .unwrap();
+        let user: Vec<u16> = [0x0001, 0x1001, 0x2001, 0x2002, 0x6002]
+            .into_iter()
+            .chain(spread(100, 0xA000, 0x5FFF))
+            .collect();
+        od.set_user_part(table(&user)).unwrap();
+        check_against_scan(&od);
+        // The largest possible table: every index.
+        if !cfg!(miri) {
+            let all: Vec<u16> = (0..=0xFFFF).collect();
+            let mut od = ObjectDictionary::empty();
+            od.set_user_part(table(&all)).unwrap();
+            for index in 0..=0xFFFFu16 {
+                assert_eq!(od.find_entry(index).map(|e| e.index()), Some(index));
+            }
+        }
+    }
 }
