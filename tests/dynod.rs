@@ -167,6 +167,12 @@ impl Node {
         while self.stack.drain(&mut self.port, now).is_some() {}
     }
 
+    fn destroy_in<const N: usize>(&mut self, pool: &'static DynPool<N>) {
+        let now = self.now();
+        pool.destroy(&mut self.stack, &mut self.port, now).unwrap();
+        while self.stack.drain(&mut self.port, now).is_some() {}
+    }
+
     fn read(&self, index: u16, sub: u8) -> Vec<u8> {
         let mut b = [0u8; 256];
         let n = self
@@ -806,4 +812,130 @@ fn two_nodes_exchange_network_variables_by_pdo() {
             "{index:04X}sub{sub}"
         );
     }
+}
+
+// ---------------------------------------------------------------------
+// The index of the entries lives in the pool: a pool in use, or one with
+// room for the tables but not for the index, decides the same.
+// ---------------------------------------------------------------------
+
+node!(busy_owner);
+node!(busy_other);
+node!(busy_free);
+#[test]
+fn a_pool_in_use_checks_the_container_as_a_free_one() {
+    let bus = SimBus::new();
+    let mut owner = Node::new(&bus, busy_owner::od(), 1);
+    let mut other = Node::new(&bus, busy_other::od(), 2);
+    let mut free = Node::new(&bus, busy_free::od(), 3);
+    // The owner's dynamic OD takes busy_owner::POOL.
+    owner
+        .build(
+            &busy_owner::POOL,
+            &container(&sample_entries(), None, None),
+            None,
+        )
+        .unwrap();
+    let owner_before = snapshot(&owner.stack);
+    let other_before = snapshot(&other.stack);
+    let mut truncated = container(&sample_entries(), None, None);
+    truncated.truncate(60);
+    // The container and the dictionary are checked before the pool is
+    // needed; the PDOs' final state (like the writes) only after.
+    let cases: Vec<(Vec<u8>, CopKernel)> = vec![
+        (
+            container(&[(0x0005, 0, 0x70, &[0])], None, None),
+            CopKernel::ObdIndexNotExist,
+        ),
+        (
+            container(&[(0x1017, 1, 0x70, &[0, 0])], None, None),
+            CopKernel::ObdSubindexNotExist,
+        ),
+        (
+            container(&[(0x1017, 0, 0x70, &[1, 2, 3])], None, None),
+            CopKernel::ObdValueLengthError,
+        ),
+        (
+            container(&[(0xA580, 1, 0x70, &[1])], None, None),
+            CopKernel::DynInvalidConfig,
+        ),
+        (
+            container(
+                &[(0x2104, 0, 0x70, &[1]), (0x2104, 0, 0x70, &[1, 2])],
+                None,
+                None,
+            ),
+            CopKernel::DynInvalidConfig,
+        ),
+        (truncated, CopKernel::DynInvalidConfig),
+        (
+            container(&[(0x1800, 1, 0x70, &[0x01, 0, 0, 0])], None, None),
+            CopKernel::NoFreeInstance,
+        ),
+        (
+            container(&sample_entries(), None, None),
+            CopKernel::NoFreeInstance,
+        ),
+    ];
+    for (c, code) in &cases {
+        assert_eq!(other.build(&busy_owner::POOL, c, None), Err(*code));
+        if *code != CopKernel::NoFreeInstance {
+            assert_eq!(free.build(&busy_free::POOL, c, None), Err(*code));
+        }
+        assert_eq!(snapshot(&other.stack), other_before);
+        assert_eq!(snapshot(&owner.stack), owner_before, "the owner's tables");
+        assert!(busy_owner::POOL.is_in_use());
+        assert!(!busy_free::POOL.is_in_use());
+    }
+}
+
+node!(tight);
+node!(roomy);
+/// Sixty new UNSIGNED8 objects 0x2100..0x213B (subindex 0, one byte each).
+fn sixty_bytes() -> Vec<u8> {
+    const VALUES: [u8; 60] = {
+        let mut v = [0u8; 60];
+        let mut i = 0;
+        while i < 60 {
+            v[i] = i as u8;
+            i += 1;
+        }
+        v
+    };
+    let entries: Vec<(u16, u8, u8, &[u8])> = (0..60u16)
+        .map(|i| (0x2100 + i, 0u8, 0x70u8, &VALUES[i as usize..i as usize + 1]))
+        .collect();
+    container(&entries, None, None)
+}
+/// What `sixty_bytes` takes of the pool: 60 index entries, 60 subindex
+/// entries, 60 variables of one byte and the copy of the index segment
+/// (4 + 60 × 8 bytes); no snapshot.
+const SIXTY_BYTES_POOL: usize = {
+    let entries = 60 * core::mem::size_of::<ObdEntry>();
+    let align = core::mem::align_of::<ObdSubEntry>();
+    let subs_at = entries.div_ceil(align) * align;
+    subs_at + 60 * core::mem::size_of::<ObdSubEntry>() + 60 + (4 + 60 * 8)
+};
+/// Room for the tables and 16 bytes more: not for the index of the
+/// entries (8 bytes per entry) and the plan's notes (1 byte per entry)
+/// beside them.
+static TIGHT: DynPool<{ SIXTY_BYTES_POOL + 16 }> = DynPool::new();
+#[test]
+fn a_pool_without_room_for_the_index_builds_the_same() {
+    // The same node-ID (the PDOs' default COB-IDs), on buses of their own.
+    let bus_t = SimBus::new();
+    let bus_r = SimBus::new();
+    let mut t = Node::new(&bus_t, tight::od(), 1);
+    let mut r = Node::new(&bus_r, roomy::od(), 1);
+    let c = sixty_bytes();
+    let now = t.now();
+    let info = TIGHT
+        .build(&mut t.stack, &mut t.port, now, &c, None)
+        .unwrap();
+    assert_eq!(info.pool_used, SIXTY_BYTES_POOL);
+    assert_eq!(r.build(&roomy::POOL, &c, None), Ok(info));
+    assert_eq!(snapshot(&t.stack), snapshot(&r.stack));
+    assert_eq!(t.read(0x213B, 0), [59]);
+    t.destroy_in(&TIGHT);
+    assert!(!TIGHT.is_in_use());
 }

@@ -16,12 +16,33 @@
 //! | index table (`tObdEntry`): the application's user part merged with the new objects, sorted | (user entries + new indices) × `size_of::<ObdEntry>()` (16 bytes on 32-bit targets) |
 //! | subindex tables (`tObdSubEntry`) of the new objects | new subindices × `size_of::<ObdSubEntry>()` (16 bytes on 32-bit targets) |
 //! | variables that are not in the process image | their C width; strings capacity + 1 |
-//! | copy of the container's index segment | its size (the values re-applied after NMT resets) |
 //! | snapshot of the existing values the build overwrites | 5 bytes + the value per write (undo of a refused build) |
+//! | copy of the container's index segment | its size (the values re-applied after NMT resets) |
 //!
 //! A container whose tables do not fit is refused with `kCopDynNoMemory`
 //! before anything changes. Single-instance builds have one pool; host
 //! builds (`std`) one per simulated instance.
+//!
+//! ## Build-time data
+//! While a build runs, the last bytes of the pool hold what makes it
+//! linear in the container's entries instead of quadratic:
+//!
+//! | at the end of the pool | size |
+//! |---|---|
+//! | notes of the plan (whether each entry writes an existing object) | 1 byte per entry |
+//! | index of the entries ([`crate::od::dcf::Container::parse_indexed`]) | 8 bytes per entry, 10 with an address segment ([`crate::od::dcf::index_scratch_len`]; 12/14 for index segments from 64 KiB on) |
+//!
+//! They are built right after the pool is claimed, before the container is
+//! checked, and lie where the copy of the index segment and the unused
+//! rest of the pool are: the tables and the snapshot are written below
+//! them, the copy over them as the build's last step. Between them, the
+//! bytes from the copy's place to the notes hold the bitmap that checks
+//! that no two variables share bytes of the process image (one bit per
+//! byte of the image). When the pool has no room for them beside the
+//! tables the build goes on without them (the same checks and result,
+//! slower); they never make a container refused that fits. A pool in use
+//! by another stack is not touched: the container is checked without them
+//! and then refused with `kCopNoFreeInstance`, as before.
 //!
 //! # Lifetime rules
 //! The tables belong to the stack they were built for until `DynDestroyOd`
@@ -30,7 +51,7 @@
 
 use core::cell::UnsafeCell;
 use core::ffi::c_void;
-use core::mem::{MaybeUninit, align_of, size_of};
+use core::mem::{align_of, size_of};
 use core::sync::atomic::{AtomicBool, AtomicU8, Ordering};
 
 use super::global;
@@ -40,7 +61,7 @@ use crate::ccm::Stack;
 use crate::error::CopKernel;
 use crate::od::Part;
 use crate::od::dcf::{Container, HEADER_SIZE};
-use crate::od::dynamic::{BuildInfo, Initial, Installed, NewSub, Place, Plan, image_overlaps};
+use crate::od::dynamic::{BuildInfo, Initial, Installed, NewSub, Place, Plan, image_overlaps_in};
 use crate::od::value;
 use crate::port::{CanPort, Clock, Ticks};
 
@@ -84,8 +105,10 @@ static_assertions::assert_eq_size!(tProcessImageDscrpt, [u8; 32]);
 /// must not make it read far past the caller's data.
 pub const MAX_CONTAINER: u32 = 0x0100_0000;
 
+/// The pool's bytes, zero from the start (a `static` in `.bss`), so that
+/// they can always be lent out as `&mut [u8]`.
 #[repr(C, align(8))]
-struct Mem<const N: usize>([MaybeUninit<u8>; N]);
+struct Mem<const N: usize>([u8; N]);
 
 /// Storage for the tables of one dynamic object dictionary (see the module
 /// docs for the layout). Declare it as a `static`; it is claimed by a
@@ -123,8 +146,8 @@ struct Layout {
     subs_at: usize,
     subs: usize,
     data_at: usize,
-    copy_at: usize,
     snap_at: usize,
+    copy_at: usize,
     end: usize,
 }
 
@@ -136,16 +159,16 @@ impl Layout {
             align_of::<ObdSubEntry>(),
         );
         let data_at = subs_at.checked_add(plan.new_subs.checked_mul(size_of::<ObdSubEntry>())?)?;
-        let copy_at = data_at.checked_add(plan.data_bytes)?;
-        let snap_at = copy_at.checked_add(plan.container().index_segment().len())?;
-        let end = snap_at.checked_add(plan.snapshot_bytes)?;
+        let snap_at = data_at.checked_add(plan.data_bytes)?;
+        let copy_at = snap_at.checked_add(plan.snapshot_bytes)?;
+        let end = copy_at.checked_add(plan.container().index_segment().len())?;
         Some(Layout {
             entries,
             subs_at,
             subs: plan.new_subs,
             data_at,
-            copy_at,
             snap_at,
+            copy_at,
             end,
         })
     }
@@ -155,7 +178,7 @@ impl<const N: usize> DynPool<N> {
     /// An unused pool.
     pub const fn new() -> Self {
         DynPool {
-            mem: UnsafeCell::new(Mem([MaybeUninit::uninit(); N])),
+            mem: UnsafeCell::new(Mem([0; N])),
             claimed: AtomicBool::new(false),
         }
     }
@@ -172,6 +195,10 @@ impl<const N: usize> DynPool<N> {
 
     fn id(&self) -> usize {
         self as *const Self as usize
+    }
+
+    fn base(&self) -> *mut u8 {
+        self.mem.get() as *mut u8
     }
 
     /// `DynBuildOd` for Rust: applies `container` to `stack` (see
@@ -195,25 +222,69 @@ impl<const N: usize> DynPool<N> {
         if stack.dynamic_od().is_some() {
             return Err(CopKernel::NoFreeInstance);
         }
-        let c = Container::parse(container).map_err(|e| e.kernel())?;
-        let plan = Plan::new(c, stack.od(), image.map_or(0, <[AtomicU8]>::len))?;
+        // The pool is claimed before the container is read, because the
+        // index of its entries is built in the pool. A pool in use (the
+        // tables of another stack) is not touched: the container is then
+        // checked without index (the same checks, by scanning it) and the
+        // build refused with kCopNoFreeInstance after them, as a free pool
+        // would have been claimed after them.
+        let claimed = self
+            .claimed
+            .compare_exchange(false, true, Ordering::AcqRel, Ordering::Acquire)
+            .is_ok();
+        let r = self.plan_and_fill(claimed, stack, port, now, container, image);
+        if r.is_err() && claimed {
+            self.claimed.store(false, Ordering::Release);
+        }
+        r
+    }
+
+    fn plan_and_fill(
+        &'static self,
+        claimed: bool,
+        stack: &mut Stack,
+        port: &mut impl CanPort,
+        now: Ticks,
+        container: &[u8],
+        image: Option<&'static [AtomicU8]>,
+    ) -> Result<BuildInfo, CopKernel> {
+        let image_len = image.map_or(0, <[AtomicU8]>::len);
+        let plan = if claimed {
+            // SAFETY: the pool is claimed by this build, so nothing else
+            // uses its memory, and no reference into it exists (a previous
+            // build's tables were detached from their stack before the pool
+            // was given back). Its N bytes are initialised (`Mem` starts
+            // zeroed and is only ever written with bytes).
+            let scratch = unsafe { core::slice::from_raw_parts_mut(self.base(), N) };
+            let c = Container::parse_indexed(container, scratch).map_err(|e| e.kernel())?;
+            // SAFETY: the index took the last `index_len()` bytes of the
+            // pool; the bytes before it are not referred to any more (the
+            // slice above is not used again).
+            let notes = unsafe { core::slice::from_raw_parts_mut(self.base(), N - c.index_len()) };
+            Plan::new_with_notes(c, stack.od(), image_len, notes)?
+        } else {
+            let c = Container::parse(container).map_err(|e| e.kernel())?;
+            Plan::new(c, stack.od(), image_len)?
+        };
         let original = stack.od().part(Part::User);
         let layout = Layout::of(&plan, original.len()).ok_or(CopKernel::DynNoMemory)?;
         if layout.end > N {
             return Err(CopKernel::DynNoMemory);
         }
-        if self
-            .claimed
-            .compare_exchange(false, true, Ordering::AcqRel, Ordering::Acquire)
-            .is_err()
-        {
+        if !claimed {
             return Err(CopKernel::NoFreeInstance);
         }
-        let r = self.fill(&plan, &layout, original, stack, port, now, image);
-        if r.is_err() {
-            self.claimed.store(false, Ordering::Release);
-        }
-        r
+        // The index and the plan's notes lie at the end of the pool; the
+        // tables and the snapshot are written before them, the copy of the
+        // index segment over them at the very end. When the tables would
+        // reach them, the build goes on without them.
+        let index_at = N - plan.container().index_len() - plan.notes_len();
+        let plan = if index_at < layout.copy_at {
+            plan.without_index()
+        } else {
+            plan
+        };
+        self.fill(&plan, &layout, index_at, original, stack, port, now, image)
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -221,24 +292,27 @@ impl<const N: usize> DynPool<N> {
         &'static self,
         plan: &Plan<'_>,
         layout: &Layout,
+        index_at: usize,
         original: &'static [ObdEntry],
         stack: &mut Stack,
         port: &mut impl CanPort,
         now: Ticks,
         image: Option<&'static [AtomicU8]>,
     ) -> Result<BuildInfo, CopKernel> {
-        let base = self.mem.get() as *mut u8;
-        // SAFETY: the pool is claimed by this build, so nothing else writes
-        // it, and no reference into it exists (a previous build's tables
-        // were detached from their stack before the pool was given back).
-        // `layout.end <= N` was checked, so every region is inside `mem`.
-        unsafe { core::ptr::write_bytes(base, 0, layout.end) };
+        // The pool is claimed by this build, so nothing else writes it; the
+        // only references into it are the container's index and the plan's
+        // notes, at `index_at..N`, which is not below `copy_at` while the
+        // plan uses them (checked by the caller). `layout.end <= N` was
+        // checked, so every region is inside `mem`. Every byte of the
+        // regions that is read later is written below first (tables, the
+        // variables' initial values, the snapshot records).
+        let base = self.base();
         let entries_ptr = base as *mut ObdEntry;
         // SAFETY: subs_at + subs * size <= end <= N (Layout::of).
         let subs_ptr = unsafe { base.add(layout.subs_at) } as *mut ObdSubEntry;
         // SAFETY: data_at <= end <= N.
         let mut data_ptr = unsafe { base.add(layout.data_at) };
-        let data_end = layout.copy_at;
+        let data_end = layout.snap_at;
 
         let mut written_entries = 0usize;
         let mut written_subs = 0usize;
@@ -253,12 +327,12 @@ impl<const N: usize> DynPool<N> {
             written_entries += 1;
             Ok(())
         };
-        for index in plan.new_index_list() {
+        for (index, subs) in plan.new_objects() {
             while let Some(o) = orig.next_if(|o| o.index() < index) {
                 put_entry(copy_entry(o))?;
             }
             let first = written_subs;
-            for d in plan.new_subs_of(index) {
+            for d in subs {
                 let d = d?;
                 if written_subs >= layout.subs {
                     return Err(CopKernel::DynInvalidConfig);
@@ -266,7 +340,7 @@ impl<const N: usize> DynPool<N> {
                 let current: *mut c_void = match d.place {
                     Place::Pool => {
                         let len = d.storage_len();
-                        // SAFETY: data_ptr stays within data_at..copy_at:
+                        // SAFETY: data_ptr stays within data_at..snap_at:
                         // the plan counted `storage_len` for every pool
                         // variable into data_bytes (checked below).
                         let used = unsafe { data_ptr.offset_from(base) } as usize;
@@ -320,17 +394,13 @@ impl<const N: usize> DynPool<N> {
         if written_entries != layout.entries || written_subs != layout.subs {
             return Err(CopKernel::DynInvalidConfig);
         }
-        let segment = plan.container().index_segment();
-        // SAFETY: copy_at + segment.len() = snap_at <= end; the source is
-        // the caller's container, which does not overlap the pool.
-        let values: &'static [u8] = unsafe {
-            let dst = base.add(layout.copy_at);
-            core::ptr::copy_nonoverlapping(segment.as_ptr(), dst, segment.len());
-            core::slice::from_raw_parts(dst, segment.len())
-        };
-        // SAFETY: snap_at..end is zeroed pool memory nobody else refers to.
+        // SAFETY: snap_at..copy_at is initialised pool memory nobody else
+        // refers to.
         let snapshot: &mut [u8] = unsafe {
-            core::slice::from_raw_parts_mut(base.add(layout.snap_at), layout.end - layout.snap_at)
+            core::slice::from_raw_parts_mut(
+                base.add(layout.snap_at),
+                layout.copy_at - layout.snap_at,
+            )
         };
         // SAFETY: every slot was written above; from now on the tables are
         // only read (until the pool is given back).
@@ -340,8 +410,26 @@ impl<const N: usize> DynPool<N> {
         let subs: &'static [ObdSubEntry] =
             unsafe { core::slice::from_raw_parts(subs_ptr, layout.subs) };
 
-        if image.is_some_and(|img| image_overlaps(img, subs)) {
-            return Err(CopKernel::DynInvalidConfig);
+        if let Some(img) = image {
+            // The bytes between the copy region's start and the index are
+            // free until the copy is made (the last step).
+            let free_end = if plan.container().is_indexed() {
+                index_at
+            } else {
+                N
+            };
+            // SAFETY: copy_at..free_end lies inside the pool, after every
+            // table and the snapshot and before the index; nothing refers
+            // to it.
+            let free = unsafe {
+                core::slice::from_raw_parts_mut(
+                    base.add(layout.copy_at),
+                    free_end.saturating_sub(layout.copy_at),
+                )
+            };
+            if image_overlaps_in(img, subs, free) {
+                return Err(CopKernel::DynInvalidConfig);
+            }
         }
         let mut candidate = *stack.od();
         candidate
@@ -349,10 +437,9 @@ impl<const N: usize> DynPool<N> {
             .map_err(|_| CopKernel::DynInvalidConfig)?;
         plan.check_pdos(&candidate)?;
 
-        stack
-            .od_mut()
-            .set_user_part(merged)
-            .map_err(|_| CopKernel::DynInvalidConfig)?;
+        // The candidate is the stack's dictionary with the new user part,
+        // already validated.
+        *stack.od_mut() = candidate;
         if let Err(e) = plan.apply(stack, snapshot, now) {
             let _ = stack.od_mut().set_user_part(original);
             stack.reload_configuration(port, now);
@@ -361,18 +448,31 @@ impl<const N: usize> DynPool<N> {
         if let Some(img) = image {
             init_image(plan, img);
         }
+        let info = BuildInfo {
+            pi: plan.pi,
+            new_indices: plan.new_indices,
+            new_subs: plan.new_subs,
+            pool_used: layout.end,
+        };
+        // The plan (and its index) is not used from here on: the copy of
+        // the index segment, kept for the resets, takes the end of the
+        // layout.
+        let segment = plan.container().index_segment();
+        // SAFETY: copy_at + segment.len() = end <= N; the source is the
+        // caller's container, which does not overlap the pool; the index
+        // that lay here is not read any more.
+        let values: &'static [u8] = unsafe {
+            let dst = base.add(layout.copy_at);
+            core::ptr::copy_nonoverlapping(segment.as_ptr(), dst, segment.len());
+            core::slice::from_raw_parts(dst, segment.len())
+        };
         stack.set_dynamic_od(Some(Installed {
             values,
             original_user: original,
             pool: self.id(),
         }));
         stack.reload_configuration(port, now);
-        Ok(BuildInfo {
-            pi: plan.pi,
-            new_indices: plan.new_indices,
-            new_subs: plan.new_subs,
-            pool_used: layout.end,
-        })
+        Ok(info)
     }
 
     /// `DynDestroyOd` for Rust: removes the dynamic OD of `stack` and
@@ -431,8 +531,8 @@ fn copy_entry(o: &ObdEntry) -> ObdEntry {
 /// (after every check passed, so that a refused build leaves the image
 /// alone too).
 fn init_image(plan: &Plan<'_>, image: &'static [AtomicU8]) {
-    for index in plan.new_index_list() {
-        for d in plan.new_subs_of(index).flatten() {
+    for (_, subs) in plan.new_objects() {
+        for d in subs.flatten() {
             write_image(&d, image);
         }
     }

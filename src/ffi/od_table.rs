@@ -342,27 +342,32 @@ impl ObdSubEntry {
         self.m_dwSize as usize
     }
 
+    /// The variable of element `element` of a RAM entry ([`kind::RAM`]),
+    /// as [`ObdSubEntry::storage`] gives it; `None` for every other kind.
+    #[inline(always)]
+    pub fn ram_var(&self, element: usize) -> Option<&'static [AtomicU8]> {
+        if self.m_bKind != kind::RAM || self.m_pCurrent.is_null() {
+            return None;
+        }
+        let size = self.size();
+        let offset = element.checked_mul(size)?;
+        // SAFETY: RAM entries point to an object of at least (element + 1) *
+        // m_dwSize bytes that lives for the whole program (a static in
+        // objdict.c or a Rust static); AtomicU8 has the size and alignment
+        // of u8.
+        Some(unsafe {
+            core::slice::from_raw_parts((self.m_pCurrent as *const AtomicU8).add(offset), size)
+        })
+    }
+
     /// Storage of element `element` (0 for plain subindices; arrays use the
     /// element number 0..n-1 with elements laid out one after the other).
     pub fn storage(&self, element: usize) -> Option<Storage> {
         let size = self.size();
-        let offset = element.checked_mul(size)?;
+        // An element whose offset overflows does not exist (every kind).
+        element.checked_mul(size)?;
         match self.m_bKind {
-            kind::RAM => {
-                if self.m_pCurrent.is_null() {
-                    return None;
-                }
-                // SAFETY: RAM entries point to an object of at least
-                // (element + 1) * m_dwSize bytes that lives for the whole
-                // program (a static in objdict.c or a Rust static); AtomicU8
-                // has the size and alignment of u8.
-                Some(Storage::Ram(unsafe {
-                    core::slice::from_raw_parts(
-                        (self.m_pCurrent as *const AtomicU8).add(offset),
-                        size,
-                    )
-                }))
-            }
+            kind::RAM => self.ram_var(element).map(Storage::Ram),
             kind::ROM => {
                 if self.m_pDefault.is_null() {
                     return None;

@@ -27,9 +27,25 @@
 //! names two data types, a BOOLEAN entry has one byte and a numeric one
 //! 1..=8 bytes, the address segment has one WORD per candidate and the
 //! parameter segment five DWORDs whose windows lie inside the image.
+//!
+//! # The index of the entries
+//! Entries of one object may come in any order and more than once, so
+//! questions like "the last entry of 0x1A00 sub 1", "the subindices of
+//! 0x2100 in ascending order" or "does 0xA4C0 have other subindices than
+//! 0" need a pass over the container each. [`Container::parse_indexed`]
+//! answers them from an index built once in scratch memory the caller
+//! lends (no heap; [`index_scratch_len`] bytes): the entries sorted by
+//! index, subindex and position (a stable merge sort, O(n log n), one
+//! comparison per entry for a sorted container), plus a few flags per
+//! entry. Every answer is the one of the scanning container; the build of
+//! the dynamic OD is linear in the entries (up to the sort) with it and
+//! quadratic without.
 
 use super::DataType;
 use crate::error::CopKernel;
+
+mod index;
+use index::Index;
 
 /// Size of the header segment.
 pub const HEADER_SIZE: usize = 40;
@@ -219,11 +235,42 @@ pub struct Entry<'a> {
 }
 
 /// A validated container.
+///
+/// Questions about the entries (first and last occurrence of a subindex,
+/// the subindices of an object, ...) scan the container, O(n) each, unless
+/// the container was parsed with [`Container::parse_indexed`], which
+/// builds an index of the entries in scratch memory: then they cost O(1)
+/// or O(log n), those about all subindices of an object the number of its
+/// entries. The answers are the same either way.
 #[derive(Clone, Copy, Debug)]
 pub struct Container<'a> {
     bytes: &'a [u8],
     header: Header,
     count: u32,
+    /// The index segment.
+    entry_bytes: &'a [u8],
+    /// The extended info segment.
+    attrs: Option<&'a [u8]>,
+    index: Option<Index<'a>>,
+}
+
+/// What a container holds for one index ([`Container::subindices`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Subindices {
+    /// Number of different subindices.
+    pub distinct: usize,
+    /// True when subindex 0 is among them.
+    pub has_zero: bool,
+    /// The highest subindex (0 when there is none).
+    pub highest: u8,
+}
+
+impl Subindices {
+    /// True when the object has subindices, but not subindex 0 (an array or
+    /// record whose count the container does not carry).
+    pub const fn lacks_count(&self) -> bool {
+        self.distinct > 0 && !self.has_zero
+    }
 }
 
 fn le16(b: &[u8], at: usize) -> Option<u16> {
@@ -244,6 +291,19 @@ pub fn declared_size(bytes: &[u8]) -> Option<u32> {
     le32(bytes, 0)
 }
 
+/// Scratch bytes [`Container::parse_indexed`] needs for an index of
+/// `entries` entries in an index segment of `index_segment_len` bytes,
+/// with or without address segment: 8 bytes per entry (10 with address
+/// segment) for index segments below 64 KiB, 12 (14) from there on.
+/// `None` on overflow.
+pub fn index_scratch_len(
+    entries: usize,
+    index_segment_len: usize,
+    address_segment: bool,
+) -> Option<usize> {
+    index::scratch_len(entries, index_segment_len, address_segment)
+}
+
 /// True when an entry is a process-image candidate, i.e. owns a WORD of
 /// the address segment: an object from 0x2000 on, and either a subindex
 /// from 1 on or subindex 0 of an object that has no other subindex in the
@@ -257,6 +317,51 @@ impl<'a> Container<'a> {
     /// Parses and validates a container (see the module documentation for
     /// every rule). Bytes after the total size are ignored.
     pub fn parse(bytes: &'a [u8]) -> Result<Container<'a>, ContainerError> {
+        let c = Self::parse_entries(bytes)?;
+        c.check_optional_segments()?;
+        Ok(c)
+    }
+
+    /// [`Container::parse`], and an index of the entries built at the end
+    /// of `scratch` (see [`index_scratch_len`] for its size; the bytes
+    /// before it are not touched). Same rules, same errors; when `scratch`
+    /// is too small the container simply has no index.
+    /// [`Container::index_len`] tells how many bytes the index took.
+    pub fn parse_indexed(
+        bytes: &'a [u8],
+        scratch: &'a mut [u8],
+    ) -> Result<Container<'a>, ContainerError> {
+        let c = Self::parse_entries(bytes)?;
+        let c = Container {
+            index: Index::build(&c, scratch),
+            ..c
+        };
+        c.check_optional_segments()?;
+        Ok(c)
+    }
+
+    /// Bytes the index occupies at the end of the scratch given to
+    /// [`Container::parse_indexed`] (0 without index).
+    pub fn index_len(&self) -> usize {
+        self.index.map_or(0, |ix| ix.len())
+    }
+
+    /// True when the container has an index of its entries.
+    pub fn is_indexed(&self) -> bool {
+        self.index.is_some()
+    }
+
+    /// The same container without its index (for when the scratch is
+    /// about to be reused).
+    pub fn without_index(self) -> Container<'a> {
+        Container {
+            index: None,
+            ..self
+        }
+    }
+
+    /// Everything [`Container::parse`] checks up to the attributes.
+    fn parse_entries(bytes: &'a [u8]) -> Result<Container<'a>, ContainerError> {
         if bytes.len() < HEADER_SIZE {
             return Err(ContainerError::Truncated);
         }
@@ -334,45 +439,71 @@ impl<'a> Container<'a> {
             bytes,
             header,
             count: 0,
+            entry_bytes: &[],
+            attrs: None,
+            index: None,
         };
         let index = c
             .segment(header.index)
             .ok_or(ContainerError::IndexSegment)?;
         let count = le32(index, 0).ok_or(ContainerError::IndexSegment)?;
+        // The attributes, when there is one per entry (else the count check
+        // below refuses the container).
+        let attrs = c
+            .segment(header.ext_info)
+            .filter(|a| a.len() as u64 == u64::from(count));
+        let mut bad_attr = None;
         // Walk the entries once: each must be complete and the last one
-        // must end exactly at the end of the segment.
-        let mut at = 4usize;
-        for _ in 0..count {
-            let size = le32(index, at + 3).ok_or(ContainerError::IndexSegment)?;
-            let size = usize::try_from(size).map_err(|_| ContainerError::IndexSegment)?;
-            at = at
-                .checked_add(ENTRY_HEADER_SIZE)
-                .and_then(|a| a.checked_add(size))
-                .filter(|end| *end <= index.len())
+        // must end exactly at the end of the segment. The first attribute
+        // that does not fit its entry is reported after the checks of the
+        // segments.
+        let mut rest = index.get(4..).ok_or(ContainerError::IndexSegment)?;
+        for position in 0..count {
+            let (head, tail) = rest
+                .split_first_chunk::<ENTRY_HEADER_SIZE>()
                 .ok_or(ContainerError::IndexSegment)?;
+            let [_, _, _, s0, s1, s2, s3] = *head;
+            let size = usize::try_from(u32::from_le_bytes([s0, s1, s2, s3]))
+                .map_err(|_| ContainerError::IndexSegment)?;
+            if bad_attr.is_none() {
+                if let Some(&a) = attrs.and_then(|a| a.get(position as usize)) {
+                    if !attribute_fits(a, size) {
+                        bad_attr = Some(ContainerError::Attribute {
+                            entry: position,
+                            value: a,
+                        });
+                    }
+                }
+            }
+            rest = tail.get(size..).ok_or(ContainerError::IndexSegment)?;
         }
-        if at != index.len() {
+        if !rest.is_empty() {
             return Err(ContainerError::TrailingBytes);
         }
-        let c = Container { count, ..c };
+        let c = Container {
+            count,
+            entry_bytes: index,
+            attrs: c.segment(header.ext_info),
+            ..c
+        };
         if header.ext_info.present() && u64::from(header.ext_info.size) != u64::from(count) {
             return Err(ContainerError::AttributeCount);
         }
-        for e in c.entries() {
-            if let Some(a) = e.attr {
-                if !attribute_fits(a, e.data.len()) {
-                    return Err(ContainerError::Attribute {
-                        entry: e.position,
-                        value: a,
-                    });
-                }
-            }
+        if let Some(err) = bad_attr {
+            return Err(err);
         }
+        Ok(c)
+    }
+
+    /// The checks of [`Container::parse`] after the attributes: the address
+    /// and the parameter segment.
+    fn check_optional_segments(&self) -> Result<(), ContainerError> {
+        let header = &self.header;
         if header.address.present() {
             if header.address.size % 2 != 0 {
                 return Err(ContainerError::AddressCount);
             }
-            if u64::from(header.address.size / 2) != c.candidate_count() as u64 {
+            if u64::from(header.address.size / 2) != self.candidate_count() as u64 {
                 return Err(ContainerError::AddressCount);
             }
         }
@@ -380,11 +511,11 @@ impl<'a> Container<'a> {
             if header.pi_param.size as usize != PI_PARAM_SIZE {
                 return Err(ContainerError::PiParams);
             }
-            if !c.pi_params().is_some_and(|p| p.consistent()) {
+            if !self.pi_params().is_some_and(|p| p.consistent()) {
                 return Err(ContainerError::PiParams);
             }
         }
-        Ok(c)
+        Ok(())
     }
 
     fn segment(&self, s: Segment) -> Option<&'a [u8]> {
@@ -406,7 +537,7 @@ impl<'a> Container<'a> {
 
     /// The index segment's bytes (count and entries).
     pub fn index_segment(&self) -> &'a [u8] {
-        self.segment(self.header.index).unwrap_or(&[])
+        self.entry_bytes
     }
 
     /// Number of index-segment entries.
@@ -432,29 +563,121 @@ impl<'a> Container<'a> {
     /// The entries in container order.
     pub fn entries(&self) -> Entries<'a> {
         Entries {
-            index: self.index_segment(),
-            attrs: self.segment(self.header.ext_info),
+            index: self.entry_bytes,
+            attrs: self.attrs,
             at: 4,
             position: 0,
             count: self.count,
         }
     }
 
+    /// Entry `pos` (counted from 0): constant time with an index, a scan
+    /// without.
+    #[inline]
+    pub fn entry(&self, pos: usize) -> Option<Entry<'a>> {
+        match &self.index {
+            Some(ix) if pos < ix.entries() => self.entry_at(ix, pos),
+            Some(_) => None,
+            None => self.entries().nth(pos),
+        }
+    }
+
+    /// Entry `pos` (with an index only).
+    fn entry_at(&self, ix: &Index<'a>, pos: usize) -> Option<Entry<'a>> {
+        let (head, rest) = self
+            .entry_bytes
+            .get(ix.offset(pos)..)?
+            .split_first_chunk::<ENTRY_HEADER_SIZE>()?;
+        let [i0, i1, sub, s0, s1, s2, s3] = *head;
+        let size = usize::try_from(u32::from_le_bytes([s0, s1, s2, s3])).ok()?;
+        let attr = match self.attrs {
+            Some(a) => Some(*a.get(pos)?),
+            None => None,
+        };
+        Some(Entry {
+            position: u32::try_from(pos).ok()?,
+            index: u16::from_le_bytes([i0, i1]),
+            sub,
+            data: rest.get(..size)?,
+            attr,
+        })
+    }
+
+    /// Flags of entry `e` of this container (with an index only).
+    #[inline]
+    fn flags(ix: &Index<'a>, e: &Entry<'_>) -> u8 {
+        ix.flags(e.position as usize)
+    }
+
+    /// Slots `a..b` of the sorted order holding `index`.
+    fn run_of(ix: &Index<'a>, index: u16) -> (usize, usize) {
+        let a = ix.lower_bound(index::key_of(index, 0));
+        let mut b = a;
+        while b < ix.entries() && ix.key_at(b) >> 8 == u32::from(index) {
+            b += 1;
+        }
+        (a, b)
+    }
+
+    /// The entries with an index in `first..=last`, in container order.
+    /// With an index, a range the container has no entry in costs
+    /// O(log n), and an entry outside the range is skipped without being
+    /// read whole.
+    pub fn entries_in(&self, first: u16, last: u16) -> EntriesIn<'_, 'a> {
+        let none = match &self.index {
+            Some(ix) => {
+                let slot = ix.lower_bound(index::key_of(first, 0));
+                slot >= ix.entries() || ix.key_at(slot) > index::key_of(last, 0xFF)
+            }
+            None => false,
+        };
+        EntriesIn {
+            c: self,
+            all: self.entries(),
+            pos: if none { self.len() } else { 0 },
+            range: (first, last),
+        }
+    }
+
     /// True when the container has an entry for `index` with a subindex
     /// other than `sub`.
     pub fn has_other_subs(&self, index: u16, sub: u8) -> bool {
-        self.entries().any(|e| e.index == index && e.sub != sub)
+        match &self.index {
+            Some(ix) => {
+                // The lowest and the highest subindex of `index`.
+                let a = ix.lower_bound(index::key_of(index, 0));
+                let b = ix.lower_bound(index::key_of(index, 0) + 0x100);
+                a < b && (ix.key_at(a) as u8 != sub || ix.key_at(b - 1) as u8 != sub)
+            }
+            None => self.entries().any(|e| e.index == index && e.sub != sub),
+        }
+    }
+
+    /// [`Container::has_other_subs`] for entry `e` of this container
+    /// (constant time with an index for subindex 0, the case
+    /// [`is_pi_candidate`] asks about).
+    pub fn entry_has_other_subs(&self, e: &Entry<'_>) -> bool {
+        match &self.index {
+            Some(ix) if e.sub == 0 => Self::flags(ix, e) & index::OTHER_SUBS != 0,
+            _ => self.has_other_subs(e.index, e.sub),
+        }
     }
 
     /// True when entry `e` is a process-image candidate ([`is_pi_candidate`]).
-    /// Constant time except for subindex 0, which needs a scan.
+    /// Constant time except for subindex 0 without index, which needs a
+    /// scan.
     pub fn is_candidate(&self, e: &Entry<'_>) -> bool {
-        e.index >= 0x2000 && (e.sub >= 1 || !self.has_other_subs(e.index, e.sub))
+        e.index >= 0x2000 && (e.sub >= 1 || !self.entry_has_other_subs(e))
     }
 
     /// Number of process-image candidates among the entries.
     pub fn candidate_count(&self) -> usize {
-        self.entries().filter(|e| self.is_candidate(e)).count()
+        match &self.index {
+            Some(ix) => ix
+                .candidates()
+                .unwrap_or_else(|| self.entries().filter(|e| self.is_candidate(e)).count()),
+            None => self.entries().filter(|e| self.is_candidate(e)).count(),
+        }
     }
 
     /// The entries in container order, each with its address word:
@@ -465,6 +688,9 @@ impl<'a> Container<'a> {
         let seg = self.segment(self.header.address);
         let mut ordinal = 0usize;
         self.entries().map(move |e| {
+            if let Some(ix) = &self.index {
+                return (e, ix.word(e.position as usize));
+            }
             let word = if self.is_candidate(&e) {
                 let w = seg.and_then(|s| le16(s, ordinal.checked_mul(2)?));
                 ordinal += 1;
@@ -474,6 +700,230 @@ impl<'a> Container<'a> {
             };
             (e, word)
         })
+    }
+
+    /// The address word of entry `e` of this container, as
+    /// [`Container::addressed`] pairs it.
+    pub fn address_word(&self, e: &Entry<'_>) -> Option<u16> {
+        match &self.index {
+            Some(ix) => ix.word(e.position as usize),
+            None => self
+                .addressed()
+                .find(|(x, _)| x.position == e.position)
+                .and_then(|(_, w)| w),
+        }
+    }
+
+    /// The first entry with the index and subindex of entry `e`.
+    pub fn first_occurrence(&self, e: &Entry<'a>) -> Entry<'a> {
+        let same = |x: &Entry<'_>| x.index == e.index && x.sub == e.sub;
+        match &self.index {
+            Some(ix) if Self::flags(ix, e) & index::FIRST_OF_KEY != 0 => *e,
+            Some(ix) => {
+                let slot = ix.lower_bound(index::key_of(e.index, e.sub));
+                self.entry_at(ix, ix.position(slot))
+                    .filter(same)
+                    .unwrap_or(*e)
+            }
+            None => self.entries().find(same).unwrap_or(*e),
+        }
+    }
+
+    /// True when entry `e` is the first one with its index and subindex.
+    #[inline]
+    pub fn is_first_occurrence(&self, e: &Entry<'_>) -> bool {
+        match &self.index {
+            Some(ix) => Self::flags(ix, e) & index::FIRST_OF_KEY != 0,
+            None => self.scan_is_first_occurrence(e),
+        }
+    }
+
+    #[inline(never)]
+    fn scan_is_first_occurrence(&self, e: &Entry<'_>) -> bool {
+        self.entries()
+            .find(|x| x.index == e.index && x.sub == e.sub)
+            .is_some_and(|x| x.position == e.position)
+    }
+
+    /// [`Container::is_first_occurrence`] of entry `pos`: constant time
+    /// with an index, without reading the entry.
+    #[inline]
+    pub fn is_first_occurrence_at(&self, pos: usize) -> bool {
+        match &self.index {
+            Some(ix) => ix.flags(pos) & index::FIRST_OF_KEY != 0,
+            None => self
+                .entry(pos)
+                .is_some_and(|e| self.is_first_occurrence(&e)),
+        }
+    }
+
+    /// The last entry for `index`/`sub`, if any.
+    pub fn last_occurrence(&self, index: u16, sub: u8) -> Option<Entry<'a>> {
+        let same = |x: &Entry<'_>| x.index == index && x.sub == sub;
+        match &self.index {
+            Some(ix) => {
+                let slot = ix.lower_bound(index::key_of(index, sub) + 1);
+                let last = slot.checked_sub(1)?;
+                self.entry_at(ix, ix.position(last)).filter(same)
+            }
+            None => self.entries().filter(same).last(),
+        }
+    }
+
+    /// True when entry `e` is the last one with its index and subindex.
+    #[inline]
+    pub fn is_last_occurrence(&self, e: &Entry<'_>) -> bool {
+        match &self.index {
+            Some(ix) => Self::flags(ix, e) & index::LAST_OF_KEY != 0,
+            None => self
+                .last_occurrence(e.index, e.sub)
+                .is_some_and(|l| l.position == e.position),
+        }
+    }
+
+    /// True when entry `e` is the first one with its index.
+    #[inline]
+    pub fn is_first_of_index(&self, e: &Entry<'_>) -> bool {
+        match &self.index {
+            Some(ix) => Self::flags(ix, e) & index::FIRST_OF_INDEX != 0,
+            None => self.first_position(e.index) == Some(e.position),
+        }
+    }
+
+    /// True when the container has an entry for subindex 0 of the index of
+    /// entry `e` (constant time with an index when `e` is the first entry
+    /// of its index).
+    #[inline]
+    pub fn has_sub_zero(&self, e: &Entry<'_>) -> bool {
+        match &self.index {
+            Some(ix) if Self::flags(ix, e) & index::FIRST_OF_INDEX != 0 => {
+                Self::flags(ix, e) & index::ZERO_SUB != 0
+            }
+            _ => self.last_occurrence(e.index, 0).is_some(),
+        }
+    }
+
+    /// Position of the first entry with `index`, if any.
+    pub fn first_position(&self, index: u16) -> Option<u32> {
+        match &self.index {
+            Some(ix) => {
+                let (a, b) = Self::run_of(ix, index);
+                (a..b)
+                    .map(|s| ix.position(s))
+                    .find(|p| ix.flags(*p) & index::FIRST_OF_INDEX != 0)
+                    .and_then(|p| u32::try_from(p).ok())
+            }
+            None => self
+                .entries()
+                .find(|x| x.index == index)
+                .map(|x| x.position),
+        }
+    }
+
+    /// The subindices the container has for `index`.
+    pub fn subindices(&self, index: u16) -> Subindices {
+        let mut s = Subindices::default();
+        match &self.index {
+            Some(ix) => {
+                let mut slot = ix.lower_bound(index::key_of(index, 0));
+                let mut prev = None;
+                while slot < ix.entries() {
+                    let k = ix.key_at(slot);
+                    if k >> 8 != u32::from(index) {
+                        break;
+                    }
+                    if prev != Some(k) {
+                        let sub = k as u8;
+                        s.distinct += 1;
+                        s.has_zero |= sub == 0;
+                        s.highest = s.highest.max(sub);
+                        prev = Some(k);
+                    }
+                    slot += 1;
+                }
+            }
+            None => {
+                for e in self.entries().filter(|e| e.index == index) {
+                    if self.first_occurrence(&e).position == e.position {
+                        s.distinct += 1;
+                    }
+                    s.has_zero |= e.sub == 0;
+                    s.highest = s.highest.max(e.sub);
+                }
+            }
+        }
+        s
+    }
+
+    /// The indices of the entries, each once, in ascending order.
+    pub fn indices(&self) -> impl Iterator<Item = u16> + '_ {
+        let mut last: Option<u16> = None;
+        let mut slot = 0usize;
+        core::iter::from_fn(move || {
+            let next = match &self.index {
+                Some(ix) => {
+                    while slot < ix.entries()
+                        && last.is_some_and(|l| (ix.key_at(slot) >> 8) as u16 == l)
+                    {
+                        slot += 1;
+                    }
+                    if slot >= ix.entries() {
+                        return None;
+                    }
+                    (ix.key_at(slot) >> 8) as u16
+                }
+                None => self
+                    .entries()
+                    .filter(|e| last.is_none_or(|l| e.index > l))
+                    .map(|e| e.index)
+                    .min()?,
+            };
+            last = Some(next);
+            Some(next)
+        })
+    }
+
+    /// The indices of the entries in ascending order, each with its
+    /// subindices ([`Container::subs_of`]).
+    pub fn objects(&self) -> impl Iterator<Item = SubsOf<'_, 'a>> + '_ {
+        let mut slot = 0usize;
+        let mut indices = self.indices();
+        core::iter::from_fn(move || match &self.index {
+            Some(ix) => {
+                if slot >= ix.entries() {
+                    return None;
+                }
+                let index = (ix.key_at(slot) >> 8) as u16;
+                let start = slot;
+                while slot < ix.entries() && ix.key_at(slot) >> 8 == u32::from(index) {
+                    slot += 1;
+                }
+                Some(SubsOf {
+                    c: self,
+                    index,
+                    last: None,
+                    slot: start,
+                    end: slot,
+                })
+            }
+            None => indices.next().map(|i| self.subs_of(i)),
+        })
+    }
+
+    /// The subindices of `index` in ascending order, each as its first and
+    /// its last entry.
+    pub fn subs_of(&self, index: u16) -> SubsOf<'_, 'a> {
+        let (slot, end) = match &self.index {
+            Some(ix) => Self::run_of(ix, index),
+            None => (0, 0),
+        };
+        SubsOf {
+            c: self,
+            index,
+            last: None,
+            slot,
+            end,
+        }
     }
 
     /// The process-image parameters, when the segment is present.
@@ -490,6 +940,7 @@ impl<'a> Container<'a> {
 }
 
 /// True when attribute `a` is allowed for `len` bytes of data.
+#[inline]
 fn attribute_fits(a: u8, len: usize) -> bool {
     if a & attr::RESERVED != 0 {
         return false;
@@ -519,12 +970,15 @@ impl<'a> Iterator for Entries<'a> {
         if self.position >= self.count {
             return None;
         }
-        let index = le16(self.index, self.at)?;
-        let sub = *self.index.get(self.at + 2)?;
-        let size = usize::try_from(le32(self.index, self.at + 3)?).ok()?;
-        let start = self.at + ENTRY_HEADER_SIZE;
-        let end = start.checked_add(size)?;
-        let data = self.index.get(start..end)?;
+        let (head, rest) = self
+            .index
+            .get(self.at..)?
+            .split_first_chunk::<ENTRY_HEADER_SIZE>()?;
+        let [i0, i1, sub, s0, s1, s2, s3] = *head;
+        let index = u16::from_le_bytes([i0, i1]);
+        let size = usize::try_from(u32::from_le_bytes([s0, s1, s2, s3])).ok()?;
+        let data = rest.get(..size)?;
+        let end = self.at + ENTRY_HEADER_SIZE + size;
         let attr = match self.attrs {
             Some(a) => Some(*a.get(self.position as usize)?),
             None => None,
@@ -539,6 +993,136 @@ impl<'a> Iterator for Entries<'a> {
         self.at = end;
         self.position += 1;
         Some(e)
+    }
+}
+
+/// Iterator over the entries of a container with an index in a range
+/// ([`Container::entries_in`]).
+#[derive(Clone, Debug)]
+pub struct EntriesIn<'c, 'a> {
+    c: &'c Container<'a>,
+    all: Entries<'a>,
+    pos: usize,
+    range: (u16, u16),
+}
+
+impl<'a> Iterator for EntriesIn<'_, 'a> {
+    type Item = Entry<'a>;
+
+    fn next(&mut self) -> Option<Entry<'a>> {
+        let (first, last) = self.range;
+        let ix = match &self.c.index {
+            Some(ix) if self.range != (0x0000, 0xFFFF) => ix,
+            _ => return self.all.find(|e| (first..=last).contains(&e.index)),
+        };
+        let segment = self.c.index_segment();
+        while self.pos < ix.entries() {
+            let pos = self.pos;
+            self.pos += 1;
+            if le16(segment, ix.offset(pos)).is_some_and(|i| (first..=last).contains(&i)) {
+                return self.c.entry_at(ix, pos);
+            }
+        }
+        None
+    }
+}
+
+/// Iterator over the subindices of one index ([`Container::subs_of`]).
+#[derive(Clone, Debug)]
+pub struct SubsOf<'c, 'a> {
+    c: &'c Container<'a>,
+    index: u16,
+    /// Without index: the subindex returned last.
+    last: Option<u8>,
+    /// With index: the slots of the index still to go.
+    slot: usize,
+    end: usize,
+}
+
+impl SubsOf<'_, '_> {
+    /// The index.
+    pub fn index(&self) -> u16 {
+        self.index
+    }
+
+    /// The count subindex the object lacks: `Some(highest subindex)` when
+    /// the container has subindices of the index but not subindex 0
+    /// ([`Subindices::lacks_count`]), else `None`. Constant time with an
+    /// index; ask before iterating.
+    pub fn missing_count(&self) -> Option<u8> {
+        let Some(ix) = &self.c.index else {
+            let s = self.c.subindices(self.index);
+            return s.lacks_count().then_some(s.highest);
+        };
+        if self.slot >= self.end || ix.key_at(self.slot) & 0xFF == 0 {
+            return None;
+        }
+        Some(ix.key_at(self.end - 1) as u8)
+    }
+
+    /// The position of an entry of the index, with an index and before
+    /// iterating (`None` otherwise).
+    pub fn entry_position(&self) -> Option<u32> {
+        let ix = self.c.index.as_ref()?;
+        (self.slot < self.end)
+            .then(|| u32::try_from(ix.position(self.slot)).ok())
+            .flatten()
+    }
+
+    /// [`Container::subindices`] of the index (without a second search
+    /// when the container has an index).
+    pub fn subindices(&self) -> Subindices {
+        let Some(ix) = &self.c.index else {
+            return self.c.subindices(self.index);
+        };
+        let mut s = Subindices::default();
+        let mut prev = None;
+        for slot in self.slot..self.end {
+            let k = ix.key_at(slot);
+            if prev != Some(k) {
+                let sub = k as u8;
+                s.distinct += 1;
+                s.has_zero |= sub == 0;
+                s.highest = s.highest.max(sub);
+                prev = Some(k);
+            }
+        }
+        s
+    }
+}
+
+impl<'a> Iterator for SubsOf<'_, 'a> {
+    type Item = (Entry<'a>, Entry<'a>);
+
+    fn next(&mut self) -> Option<(Entry<'a>, Entry<'a>)> {
+        let c = self.c;
+        let Some(ix) = &c.index else {
+            let index = self.index;
+            let sub = c
+                .entries()
+                .filter(|e| e.index == index && self.last.is_none_or(|l| e.sub > l))
+                .map(|e| e.sub)
+                .min()?;
+            self.last = Some(sub);
+            let e = c.last_occurrence(index, sub)?;
+            return Some((c.first_occurrence(&e), e));
+        };
+        if self.slot >= self.end {
+            return None;
+        }
+        let pos = ix.position(self.slot);
+        let first = c.entry_at(ix, pos)?;
+        let e = if ix.flags(pos) & index::LAST_OF_KEY != 0 {
+            first
+        } else {
+            let k = ix.key_at(self.slot);
+            while self.slot + 1 < self.end && ix.key_at(self.slot + 1) == k {
+                self.slot += 1;
+            }
+            c.entry_at(ix, ix.position(self.slot))?
+        };
+        self.slot += 1;
+        Some((first, e))
     }
 }
 

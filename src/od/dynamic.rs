@@ -58,6 +58,15 @@
 //! a snapshot, the user part is restored and the modules re-read their
 //! parameters.
 //!
+//! # Cost
+//! With the index of the container's entries and the notes of the plan
+//! ([`Container::parse_indexed`], [`Plan::new_with_notes`], both in the
+//! pool for `DynBuildOd`) a build costs O(n log n) in the number of
+//! entries n (a sort; linear for a sorted container), plus a dictionary
+//! lookup per entry and the writes. Without them (a pool too small for
+//! them, or [`Plan::new`]) every question about the other entries scans
+//! the container: the same decisions in O(n²).
+//!
 //! # Resets
 //! After NMT reset communication (or reset node) the objects the container
 //! wrote get the container's values again, static ones included: the
@@ -154,24 +163,65 @@ impl NewSub<'_> {
     /// Writes the initial value in memory format (numbers in the CPU's
     /// byte order and their C width) into `out` (`storage_len` bytes).
     pub fn initial_bytes(&self, out: &mut [u8]) -> Result<(), CopKernel> {
-        out.fill(0);
-        match self.initial {
-            Initial::Count(n) => {
+        let bad = CopKernel::DynInvalidConfig;
+        match (self.initial, self.typ, self.size) {
+            // UNSIGNEDn of its own width: the number in the CPU's byte
+            // order, every byte written (what `wire_to_native` makes of it,
+            // without its detours).
+            (Initial::Wire(&[b]), DataType::UInt8, 1) => {
+                *out.first_chunk_mut::<1>().ok_or(bad)? = [b];
+                Ok(())
+            }
+            (Initial::Wire(&[b0, b1]), DataType::UInt16, 2) => {
+                *out.first_chunk_mut::<2>().ok_or(bad)? =
+                    u16::from_le_bytes([b0, b1]).to_ne_bytes();
+                Ok(())
+            }
+            (Initial::Wire(&[b0, b1, b2, b3]), DataType::UInt32, 4) => {
+                *out.first_chunk_mut::<4>().ok_or(bad)? =
+                    u32::from_le_bytes([b0, b1, b2, b3]).to_ne_bytes();
+                Ok(())
+            }
+            (Initial::Count(n), ..) => {
+                out.fill(0);
                 if let Some(b) = out.first_mut() {
                     *b = n;
                 }
                 Ok(())
             }
-            Initial::Wire(w) if self.typ.wire_size().is_some() => {
-                value::wire_to_native(self.typ, w, self.size as usize, out)
-                    .map_err(|_| CopKernel::DynInvalidConfig)
+            (Initial::Wire(w), ..) if self.typ.wire_size().is_some() => {
+                out.fill(0);
+                value::wire_to_native(self.typ, w, self.size as usize, out).map_err(|_| bad)
             }
-            Initial::Wire(w) => {
-                let dst = out.get_mut(..w.len()).ok_or(CopKernel::DynInvalidConfig)?;
+            (Initial::Wire(w), ..) => {
+                out.fill(0);
+                let dst = out.get_mut(..w.len()).ok_or(bad)?;
                 dst.copy_from_slice(w);
                 Ok(())
             }
         }
+    }
+}
+
+/// The subindices of a new object ([`Plan::new_subs_of`]): the count the
+/// container lacks first, if any, then every subindex of the container,
+/// ascending.
+#[derive(Clone, Debug)]
+pub struct NewSubs<'a, 'p> {
+    plan: &'p Plan<'a>,
+    count: Option<NewSub<'a>>,
+    subs: dcf::SubsOf<'p, 'a>,
+}
+
+impl<'a> Iterator for NewSubs<'a, '_> {
+    type Item = Result<NewSub<'a>, CopKernel>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        if let Some(c) = self.count.take() {
+            return Some(Ok(c));
+        }
+        let (first, e) = self.subs.next()?;
+        Some(self.plan.describe(&first, &e))
     }
 }
 
@@ -223,10 +273,14 @@ struct Write<'a> {
     index: u16,
     sub: u8,
     op: Op<'a>,
+    /// Known to write an object an earlier write of the sequence wrote
+    /// (a repeated entry of the plain step): its value before the build is
+    /// in the snapshot already.
+    repeat: bool,
 }
 
-/// Steps of the write sequence (module docs, "PDOs").
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// Steps of the write sequence (module docs, "PDOs"), in their order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 enum Step {
     Invalidate,
     ZeroCount,
@@ -256,7 +310,23 @@ pub struct Plan<'a> {
     pub snapshot_bytes: usize,
     /// What `DynBuildOd` reports about the process image.
     pub pi: PiParams,
+    /// One byte per entry, by position ([`NOTE_WRITES`], [`NOTE_PLAIN`],
+    /// [`NOTE_EXISTS`]), when the plan was made with
+    /// [`Plan::new_with_notes`]; empty otherwise.
+    notes: &'a [u8],
+    /// True when the container has entries of PDO parameters
+    /// (0x1400–0x1BFF).
+    pdo_entries: bool,
 }
+
+/// Note of an entry that writes an existing object (which exists before the
+/// build and is writable).
+const NOTE_WRITES: u8 = 0x01;
+/// Note of such an entry outside the PDO parameters (the plain step of the
+/// write sequence).
+const NOTE_PLAIN: u8 = 0x02;
+/// Note of an entry whose index exists before the build.
+const NOTE_EXISTS: u8 = 0x04;
 
 const RECORD_HEADER: usize = 5;
 
@@ -292,6 +362,40 @@ impl<'a> Plan<'a> {
         od: &ObjectDictionary,
         image_len: usize,
     ) -> Result<Self, CopKernel> {
+        Self::make(c, od, image_len, &mut [])
+    }
+
+    /// [`Plan::new`] for a container with an index
+    /// ([`Container::parse_indexed`]), keeping one byte per entry at the end
+    /// of `scratch` (see [`Plan::notes_len`]) that spares the write
+    /// sequence a dictionary lookup per entry. Same checks, same results;
+    /// without index or when `scratch` is shorter than one byte per entry,
+    /// the plan simply has no notes.
+    pub fn new_with_notes(
+        c: Container<'a>,
+        od: &ObjectDictionary,
+        image_len: usize,
+        scratch: &'a mut [u8],
+    ) -> Result<Self, CopKernel> {
+        Self::make(c, od, image_len, scratch)
+    }
+
+    /// Bytes the notes take at the end of the scratch given to
+    /// [`Plan::new_with_notes`] (0 without notes).
+    pub fn notes_len(&self) -> usize {
+        self.notes.len()
+    }
+
+    fn make(
+        c: Container<'a>,
+        od: &ObjectDictionary,
+        image_len: usize,
+        scratch: &'a mut [u8],
+    ) -> Result<Self, CopKernel> {
+        let notes: &'a mut [u8] = match scratch.len().checked_sub(c.len()) {
+            Some(start) if c.is_indexed() => scratch.get_mut(start..).unwrap_or_default(),
+            _ => &mut [],
+        };
         let mut p = Plan {
             c,
             od: *od,
@@ -304,8 +408,11 @@ impl<'a> Plan<'a> {
             data_bytes: 0,
             snapshot_bytes: 0,
             pi: PiParams::default(),
+            notes: &[],
+            pdo_entries: c.entries_in(0x1400, 0x1BFF).next().is_some(),
         };
-        for e in c.entries() {
+        // Only network variables of seed table 2 count for the layout.
+        for e in c.entries_in(dcf::NETVAR_INPUT_BASE, 0xA8FF) {
             if !p.exists(e.index) {
                 p.layout.add(e.index, e.sub);
             }
@@ -322,22 +429,71 @@ impl<'a> Plan<'a> {
                 p.output_base = p.layout.output_offset();
             }
         }
+        // Whether the index exists, for the indices of the two entries
+        // before (containers often carry the subindices of an object one
+        // after the other, or alternate between two objects).
+        let mut known: [Option<(u16, bool)>; 2] = [None, None];
+        // The snapshot bytes of the plain step's writes (existing writable
+        // objects outside the PDO parameters, one write per entry), and the
+        // first error sizing them meets.
+        let mut plain_bytes = 0usize;
+        let mut plain_err = None;
+        // The existing object found last (containers may write one object
+        // several times).
+        let mut found: Option<(u16, u8, super::Object)> = None;
         for e in c.entries() {
             if !index_allowed(e.index) {
                 return Err(CopKernel::ObdIndexNotExist);
             }
-            if p.exists(e.index) {
-                let obj = od
-                    .find(e.index, e.sub)
-                    .map_err(|_| CopKernel::ObdSubindexNotExist)?;
-                if obj.access().writable() {
+            let note = notes.get_mut(e.position as usize);
+            let exists = match known {
+                [Some((i, x)), _] | [_, Some((i, x))] if i == e.index => x,
+                _ => p.exists(e.index),
+            };
+            if known[0].is_none_or(|(i, _)| i != e.index) {
+                known = [Some((e.index, exists)), known[0]];
+            }
+            if exists {
+                let obj = match found {
+                    Some((i, s, o)) if i == e.index && s == e.sub => o,
+                    _ => od
+                        .find(e.index, e.sub)
+                        .map_err(|_| CopKernel::ObdSubindexNotExist)?,
+                };
+                found = Some((e.index, e.sub, obj));
+                let writable = obj.access().writable();
+                if writable {
                     od.stage(&obj, ByteOrder::Wire, e.data)
                         .map_err(|err| err.kernel)?;
+                    if !is_pdo_param(e.index) {
+                        match obj.native_size() {
+                            Ok(size) => plain_bytes += RECORD_HEADER + size,
+                            Err(err) => {
+                                plain_err.get_or_insert(err.kernel);
+                            }
+                        }
+                    }
+                }
+                if let Some(n) = note {
+                    *n = match (writable, is_pdo_param(e.index)) {
+                        (false, _) => NOTE_EXISTS,
+                        (true, true) => NOTE_EXISTS | NOTE_WRITES,
+                        (true, false) => NOTE_EXISTS | NOTE_WRITES | NOTE_PLAIN,
+                    };
                 }
                 continue;
             }
-            let first = p.first_occurrence(&e);
-            let d = p.describe(&first, &e)?;
+            if let Some(n) = note {
+                *n = 0;
+            }
+            let earlier;
+            let first = if c.is_indexed() && c.is_first_occurrence(&e) {
+                &e
+            } else {
+                earlier = c.first_occurrence(&e);
+                &earlier
+            };
+            let d = p.describe(first, &e)?;
             if first.position != e.position {
                 // A repeated entry of a new object must agree with the first.
                 if first.data.len() != e.data.len() || first.attr != e.attr {
@@ -349,14 +505,14 @@ impl<'a> Plan<'a> {
             if d.place == Place::Pool {
                 p.data_bytes += d.storage_len();
             }
-            if p.first_of_index(&e) {
+            if c.is_first_of_index(&e) {
                 p.new_indices += 1;
-                let distinct = c
-                    .entries()
-                    .filter(|x| x.index == e.index && p.first_occurrence(x).position == x.position)
-                    .count();
-                let synth = usize::from(p.needs_count(e.index));
-                if distinct + synth > usize::from(u8::MAX) {
+                // `Subindices::lacks_count` (the object has entry `e`).
+                let synth = usize::from(!c.has_sub_zero(&e));
+                // More than 255 subindices need as many entries.
+                if c.len() >= usize::from(u8::MAX)
+                    && c.subindices(e.index).distinct + synth > usize::from(u8::MAX)
+                {
                     return Err(CopKernel::DynInvalidConfig);
                 }
                 if synth == 1 {
@@ -365,13 +521,24 @@ impl<'a> Plan<'a> {
                 }
             }
         }
-        // Snapshot size: a record per write of the sequence (an upper bound:
-        // `apply` records each object once).
+        p.notes = notes;
+        // Snapshot size: a record per write of the sequence (`apply`
+        // records each write). The plain step's were counted above; its
+        // error counts where the step comes in the sequence.
         let mut seq = Sequence::new(&p);
-        let mut n = 0usize;
+        seq.skip_plain = true;
+        let mut n = plain_bytes;
         while let Some(w) = seq.next(&p, od) {
+            if seq.step > Step::Plain {
+                if let Some(err) = plain_err.take() {
+                    return Err(err);
+                }
+            }
             let obj = od.find(w.index, w.sub).map_err(|e| e.kernel)?;
             n += RECORD_HEADER + obj.native_size().map_err(|e| e.kernel)?;
+        }
+        if let Some(err) = plain_err {
+            return Err(err);
         }
         p.snapshot_bytes = n;
         Ok(p)
@@ -382,67 +549,32 @@ impl<'a> Plan<'a> {
         &self.c
     }
 
+    /// The same plan answering its questions about the container without
+    /// the container's index (by scanning it): for when the memory of the
+    /// index is about to be reused.
+    pub fn without_index(&self) -> Plan<'a> {
+        Plan {
+            c: self.c.without_index(),
+            notes: &[],
+            ..*self
+        }
+    }
+
     /// True when `index` exists in the dictionary before the build.
     pub fn exists(&self, index: u16) -> bool {
         self.od.find_entry(index).is_some()
     }
 
-    fn first_occurrence(&self, e: &Entry<'a>) -> Entry<'a> {
-        self.c
-            .entries()
-            .find(|x| x.index == e.index && x.sub == e.sub)
-            .unwrap_or(*e)
-    }
-
-    fn last_occurrence(&self, index: u16, sub: u8) -> Option<Entry<'a>> {
-        self.c
-            .entries()
-            .filter(|x| x.index == index && x.sub == sub)
-            .last()
-    }
-
-    fn first_of_index(&self, e: &Entry<'a>) -> bool {
-        self.c
-            .entries()
-            .find(|x| x.index == e.index)
-            .is_some_and(|x| x.position == e.position)
-    }
-
-    /// True when a new object has subindices from 1 on but no subindex 0.
-    fn needs_count(&self, index: u16) -> bool {
-        let mut any = false;
-        for x in self.c.entries().filter(|x| x.index == index) {
-            if x.sub == 0 {
-                return false;
-            }
-            any = true;
-        }
-        any
-    }
-
     /// Describes new subindex `e` (`first` is its first occurrence, which
-    /// decides the place; `e` gives the value).
+    /// decides the place; `e` gives the value). Inlined into its two
+    /// callers, one call per new subindex each; the rarer network
+    /// variables and process-image places are functions of their own.
+    #[inline(always)]
     fn describe(&self, first: &Entry<'a>, e: &Entry<'a>) -> Result<NewSub<'a>, CopKernel> {
         let bad = CopKernel::DynInvalidConfig;
         let len = e.data.len();
-        let others = self.c.has_other_subs(e.index, e.sub);
         let (typ, access, k, size) = if dcf::is_network_variable(e.index) {
-            if e.sub == 0 && others {
-                if len != 1 {
-                    return Err(bad);
-                }
-                (DataType::UInt8, Access::R, kind::RAM, 1)
-            } else {
-                let typ = match dcf::network_variable(e.index) {
-                    Some(nv) => nv.typ,
-                    None => unsigned_of(len).ok_or(bad)?,
-                };
-                if typ.wire_size() != Some(len) {
-                    return Err(bad);
-                }
-                let access = Access(Access::READ | Access::WRITE | Access::PDO);
-                (typ, access, kind::RAM, dcf::element_size(typ))
-            }
+            self.network_variable(e)?
         } else {
             let a = e.attr.ok_or(bad)?;
             let mut acc = 0u8;
@@ -460,7 +592,13 @@ impl<'a> Plan<'a> {
                 attr::VISIBLE_STRING => (DataType::VString, Access(acc), kind::RAM_VSTRING, len),
                 attr::NUMERIC => {
                     let t = unsigned_of(len).ok_or(bad)?;
-                    (t, Access(acc), kind::RAM, dcf::element_size(t))
+                    // dcf::element_size(t) for UNSIGNEDn of `len` bytes.
+                    let width = match len {
+                        1 | 2 => len,
+                        3 | 4 => 4,
+                        _ => 8,
+                    };
+                    (t, Access(acc), kind::RAM, width)
                 }
                 _ => (DataType::Domain, Access(acc), kind::RAM, len),
             }
@@ -468,7 +606,11 @@ impl<'a> Plan<'a> {
         if typ == DataType::Bool && e.data.first().is_some_and(|b| *b > 1) {
             return Err(bad);
         }
-        let place = self.place(first, typ, dcf::element_size(typ))?;
+        let place = if self.image_len == 0 {
+            Place::Pool
+        } else {
+            self.place(first, typ)?
+        };
         Ok(NewSub {
             index: e.index,
             sub: e.sub,
@@ -481,17 +623,36 @@ impl<'a> Plan<'a> {
         })
     }
 
-    fn place(&self, first: &Entry<'a>, typ: DataType, size: usize) -> Result<Place, CopKernel> {
+    /// Type, access, kind and size of network variable `e` (0xA000–0xAFFF).
+    #[inline(never)]
+    fn network_variable(&self, e: &Entry<'a>) -> Result<(DataType, Access, u8, usize), CopKernel> {
+        let bad = CopKernel::DynInvalidConfig;
+        let len = e.data.len();
+        if e.sub == 0 && self.c.entry_has_other_subs(e) {
+            if len != 1 {
+                return Err(bad);
+            }
+            return Ok((DataType::UInt8, Access::R, kind::RAM, 1));
+        }
+        let typ = match dcf::network_variable(e.index) {
+            Some(nv) => nv.typ,
+            None => unsigned_of(len).ok_or(bad)?,
+        };
+        if typ.wire_size() != Some(len) {
+            return Err(bad);
+        }
+        let access = Access(Access::READ | Access::WRITE | Access::PDO);
+        Ok((typ, access, kind::RAM, dcf::element_size(typ)))
+    }
+
+    #[inline(never)]
+    fn place(&self, first: &Entry<'a>, typ: DataType) -> Result<Place, CopKernel> {
         if self.image_len == 0 || typ.wire_size().is_none() {
             return Ok(Place::Pool);
         }
+        let size = dcf::element_size(typ);
         let at = if self.c.has_addresses() {
-            let word = self
-                .c
-                .addressed()
-                .find(|(x, _)| x.position == first.position)
-                .and_then(|(_, w)| w);
-            match word {
+            match self.c.address_word(first) {
                 Some(w) => u32::from(w),
                 None => return Ok(Place::Pool),
             }
@@ -518,66 +679,52 @@ impl<'a> Plan<'a> {
 
     /// The new indices in ascending order.
     pub fn new_index_list(&self) -> impl Iterator<Item = u16> + '_ {
-        let mut last: Option<u16> = None;
-        core::iter::from_fn(move || {
-            let next = self
-                .c
-                .entries()
-                .filter(|e| !self.exists(e.index) && last.is_none_or(|l| e.index > l))
-                .map(|e| e.index)
-                .min()?;
-            last = Some(next);
-            Some(next)
-        })
+        self.c.indices().filter(|i| !self.exists(*i))
+    }
+
+    /// The new objects in ascending order of their index, each with
+    /// [`Plan::new_subs_of`] (without searching the index for each).
+    pub fn new_objects(&self) -> impl Iterator<Item = (u16, NewSubs<'a, '_>)> + '_ {
+        self.c
+            .objects()
+            .filter(|o| {
+                // The notes tell for every entry whether its index exists.
+                match o.entry_position().and_then(|p| self.notes.get(p as usize)) {
+                    Some(n) => n & NOTE_EXISTS == 0,
+                    None => !self.exists(o.index()),
+                }
+            })
+            .map(|o| (o.index(), self.new_subs(o)))
     }
 
     /// The subindices of new object `index` in ascending order, each with
     /// its last value from the container.
-    pub fn new_subs_of(
-        &self,
-        index: u16,
-    ) -> impl Iterator<Item = Result<NewSub<'a>, CopKernel>> + '_ {
-        let mut last: Option<u8> = None;
-        let mut count_done = !self.needs_count(index);
-        core::iter::from_fn(move || {
-            if !count_done {
-                count_done = true;
-                last = Some(0);
-                let highest = self
-                    .c
-                    .entries()
-                    .filter(|e| e.index == index)
-                    .map(|e| e.sub)
-                    .max()
-                    .unwrap_or(0);
-                return Some(Ok(NewSub {
-                    index,
-                    sub: 0,
-                    typ: DataType::UInt8,
-                    access: Access::R,
-                    kind: kind::RAM,
-                    size: 1,
-                    initial: Initial::Count(highest),
-                    place: Place::Pool,
-                }));
-            }
-            let sub = self
-                .c
-                .entries()
-                .filter(|e| e.index == index && last.is_none_or(|l| e.sub > l))
-                .map(|e| e.sub)
-                .min()?;
-            last = Some(sub);
-            let e = self.last_occurrence(index, sub)?;
-            let first = self.first_occurrence(&e);
-            Some(self.describe(&first, &e))
-        })
+    pub fn new_subs_of(&self, index: u16) -> NewSubs<'a, '_> {
+        self.new_subs(self.c.subs_of(index))
+    }
+
+    fn new_subs<'p>(&'p self, subs: dcf::SubsOf<'p, 'a>) -> NewSubs<'a, 'p> {
+        let count = subs.missing_count().map(|highest| NewSub {
+            index: subs.index(),
+            sub: 0,
+            typ: DataType::UInt8,
+            access: Access::R,
+            kind: kind::RAM,
+            size: 1,
+            initial: Initial::Count(highest),
+            place: Place::Pool,
+        });
+        NewSubs {
+            plan: self,
+            count,
+            subs,
+        }
     }
 
     /// The final value of `index`/`sub` after the build: the container's
     /// last entry for it, else what `candidate` holds.
     fn final_uint(&self, candidate: &ObjectDictionary, index: u16, sub: u8) -> u64 {
-        match self.last_occurrence(index, sub) {
+        match self.c.last_occurrence(index, sub) {
             Some(e) => value::le_to_u64(e.data),
             None => candidate.read_uint(index, sub).unwrap_or(0),
         }
@@ -589,17 +736,17 @@ impl<'a> Plan<'a> {
         let Some(p) = PdoIndex::of(e.index) else {
             return false;
         };
-        !self
-            .c
-            .entries()
-            .take_while(|x| x.position < e.position)
-            .any(|x| PdoIndex::of(x.index).is_some_and(|q| q.dir == p.dir && q.number == p.number))
+        let other = match p.role {
+            Role::Commu => p.mapp(),
+            Role::Mapp => p.commu(),
+        };
+        self.c.is_first_of_index(e) && self.c.first_position(other).is_none_or(|q| q > e.position)
     }
 
     /// The PDOs the container touches, each once.
     fn touched_pdos(&self) -> impl Iterator<Item = PdoIndex> + '_ {
         self.c
-            .entries()
+            .entries_in(0x1400, 0x1BFF)
             .filter(move |e| self.first_of_pdo(e))
             .filter_map(|e| PdoIndex::of(e.index))
     }
@@ -667,14 +814,21 @@ impl<'a> Plan<'a> {
             })
     }
 
+    /// [`Plan::writes_existing`] for entry `e`'s index and subindex.
+    fn entry_writes(&self, e: &Entry<'_>) -> bool {
+        match self.notes.get(e.position as usize) {
+            Some(n) => n & NOTE_WRITES != 0,
+            None => self.writes_existing(e.index, e.sub),
+        }
+    }
+
     /// True when the existing object `index`/`sub` takes the container's
     /// values (exists before the build and is writable).
     fn writes_existing(&self, index: u16, sub: u8) -> bool {
-        self.exists(index)
-            && self
-                .od
-                .find(index, sub)
-                .is_ok_and(|o| o.access().writable())
+        // `find` fails for an index the dictionary does not have.
+        self.od
+            .find(index, sub)
+            .is_ok_and(|o| o.access().writable())
     }
 
     /// Writes the container's values into `stack` in the order of the
@@ -688,12 +842,16 @@ impl<'a> Plan<'a> {
         snapshot: &mut [u8],
         now: Ticks,
     ) -> Result<(), CopKernel> {
+        // One record per write, in sequence order, except for the writes
+        // known to repeat an object: one written twice otherwise is
+        // recorded twice with the same value (nothing is written yet),
+        // which costs snapshot bytes ([`Plan::snapshot_bytes`] counts one
+        // record per write) but no search, and restores the same.
         let mut used = 0usize;
         let mut seq = Sequence::new(self);
+        seq.skip_repeats = true;
         while let Some(w) = seq.next(self, stack.od()) {
-            let seen = records(snapshot.get(..used).unwrap_or(&[]))
-                .any(|(i, s, _)| i == w.index && s == w.sub);
-            if !seen {
+            if !w.repeat {
                 used = record(stack.od(), snapshot, used, w.index, w.sub)?;
             }
         }
@@ -809,34 +967,118 @@ fn write_one(
 /// The write sequence, generated step by step so that it can read the
 /// dictionary as it is while the writes go on.
 #[derive(Clone, Debug)]
-struct Sequence<'a> {
+struct Sequence<'p, 'a> {
     step: Step,
-    it: dcf::Entries<'a>,
+    it: dcf::EntriesIn<'p, 'a>,
+    /// Next position of the plain step when the plan has notes.
+    pos: usize,
+    /// Leave the plain step out (its writes were counted otherwise).
+    skip_plain: bool,
+    /// Leave out the writes known to repeat an object (only their first
+    /// write matters for the snapshot).
+    skip_repeats: bool,
 }
 
-impl<'a> Sequence<'a> {
-    fn new(p: &Plan<'a>) -> Self {
+/// The entries a step looks at: all of them for the plain values, those
+/// of the PDO parameters (0x1400–0x1BFF) for the other steps.
+fn step_entries<'p, 'a>(c: &'p Container<'a>, step: Step) -> dcf::EntriesIn<'p, 'a> {
+    match step {
+        Step::Plain => c.entries_in(0x0000, 0xFFFF),
+        _ => c.entries_in(0x1400, 0x1BFF),
+    }
+}
+
+impl<'p, 'a> Sequence<'p, 'a> {
+    fn new(p: &'p Plan<'a>) -> Self {
+        // Without PDO entries the steps before the plain one have nothing
+        // to do.
+        let step = if p.pdo_entries {
+            Step::Invalidate
+        } else {
+            Step::Plain
+        };
         Sequence {
-            step: Step::Invalidate,
-            it: p.c.entries(),
+            step,
+            it: step_entries(&p.c, step),
+            pos: 0,
+            skip_plain: false,
+            skip_repeats: false,
         }
     }
 
-    fn next(&mut self, p: &Plan<'a>, od: &ObjectDictionary) -> Option<Write<'a>> {
+    /// The next entry the current step looks at. With notes the plain
+    /// step reads only the entries that write existing objects (the
+    /// others emit nothing).
+    fn next_entry(&mut self, p: &Plan<'a>) -> Option<Entry<'a>> {
+        if self.step == Step::Plain && self.skip_plain {
+            return None;
+        }
+        if self.step == Step::Plain && !p.notes.is_empty() {
+            // `next_plain` went through the notes.
+            return None;
+        }
+        self.it.next()
+    }
+
+    /// The plain step with notes: the next entry that writes an existing
+    /// object outside the PDO parameters ([`Sequence::emit`] of the plain
+    /// step, without reading the others).
+    fn next_plain(&mut self, p: &Plan<'a>) -> Option<Write<'a>> {
+        while let Some(note) = p.notes.get(self.pos) {
+            let pos = self.pos;
+            self.pos += 1;
+            if note & NOTE_PLAIN == 0 {
+                continue;
+            }
+            if self.skip_repeats && !p.c.is_first_occurrence_at(pos) {
+                continue;
+            }
+            let e = p.c.entry(pos)?;
+            return Some(Write {
+                index: e.index,
+                sub: e.sub,
+                op: Op::Value(e.data),
+                // A plain object is written by this step only, once per
+                // entry: the entries after its first repeat it.
+                repeat: !p.c.is_first_occurrence_at(pos),
+            });
+        }
+        None
+    }
+
+    #[inline]
+    fn next(&mut self, p: &'p Plan<'a>, od: &ObjectDictionary) -> Option<Write<'a>> {
+        if self.step == Step::Plain && !self.skip_plain && !p.notes.is_empty() {
+            if let Some(w) = self.next_plain(p) {
+                return Some(w);
+            }
+        }
+        self.next_in_steps(p, od)
+    }
+
+    #[inline(never)]
+    fn next_in_steps(&mut self, p: &'p Plan<'a>, od: &ObjectDictionary) -> Option<Write<'a>> {
         loop {
             if self.step == Step::Done {
                 return None;
             }
-            let Some(e) = self.it.next() else {
+            if self.step == Step::Plain && !self.skip_plain && !p.notes.is_empty() {
+                if let Some(w) = self.next_plain(p) {
+                    return Some(w);
+                }
+            }
+            let Some(e) = self.next_entry(p) else {
                 self.step = match self.step {
                     Step::Invalidate => Step::ZeroCount,
                     Step::ZeroCount => Step::Plain,
+                    // The other steps concern PDO entries only.
+                    Step::Plain if !p.pdo_entries => Step::Done,
                     Step::Plain => Step::PdoValues,
                     Step::PdoValues => Step::Counts,
                     Step::Counts => Step::CobIds,
                     Step::CobIds | Step::Done => Step::Done,
                 };
-                self.it = p.c.entries();
+                self.it = step_entries(&p.c, self.step);
                 continue;
             };
             if let Some(w) = self.emit(p, od, &e) {
@@ -846,19 +1088,20 @@ impl<'a> Sequence<'a> {
     }
 
     fn emit(&self, p: &Plan<'a>, od: &ObjectDictionary, e: &Entry<'a>) -> Option<Write<'a>> {
-        let last = || {
-            p.last_occurrence(e.index, e.sub)
-                .is_some_and(|l| l.position == e.position)
-        };
+        let last = || p.c.is_last_occurrence(e);
         let value = Write {
             index: e.index,
             sub: e.sub,
             op: Op::Value(e.data),
+            repeat: false,
         };
         match self.step {
             Step::Plain => {
-                return (!is_pdo_param(e.index) && p.writes_existing(e.index, e.sub))
-                    .then_some(value);
+                // A plain object is written by this step only, once per
+                // entry: the entries after its first repeat it.
+                let repeat = p.c.is_indexed() && !p.c.is_first_occurrence(e);
+                return (!is_pdo_param(e.index) && p.entry_writes(e))
+                    .then_some(Write { repeat, ..value });
             }
             Step::Done => return None,
             _ => {}
@@ -874,6 +1117,7 @@ impl<'a> Sequence<'a> {
                     index: q.commu(),
                     sub: 1,
                     op: Op::Uint(cur | u64::from(COB_INVALID)),
+                    repeat: false,
                 })
             }
             Step::ZeroCount => {
@@ -881,28 +1125,29 @@ impl<'a> Sequence<'a> {
                     index: q.mapp(),
                     sub: 0,
                     op: Op::Uint(0),
+                    repeat: false,
                 })
             }
             Step::PdoValues => {
                 let special =
                     (q.role == Role::Commu && e.sub == 1) || (q.role == Role::Mapp && e.sub == 0);
-                (!special && p.writes_existing(e.index, e.sub)).then_some(value)
+                (!special && p.entry_writes(e)).then_some(value)
             }
             Step::Counts => {
-                (q.role == Role::Mapp && e.sub == 0 && last() && p.writes_existing(e.index, 0))
-                    .then_some(value)
+                (q.role == Role::Mapp && e.sub == 0 && last() && p.entry_writes(e)).then_some(value)
             }
             Step::CobIds => {
                 if q.role == Role::Commu && e.sub == 1 {
-                    return (last() && p.writes_existing(e.index, 1)).then_some(value);
+                    return (last() && p.entry_writes(e)).then_some(value);
                 }
                 // A touched PDO whose COB-ID the container does not name
                 // gets its own value back.
-                let named = p.last_occurrence(q.commu(), 1).is_some();
+                let named = p.c.last_occurrence(q.commu(), 1).is_some();
                 (!named && p.first_of_pdo(e) && p.writes_existing(q.commu(), 1)).then_some(Write {
                     index: q.commu(),
                     sub: 1,
                     op: Op::Original,
+                    repeat: false,
                 })
             }
             Step::Plain | Step::Done => None,
@@ -961,6 +1206,44 @@ pub fn image_overlaps(image: &[AtomicU8], subs: &[super::ObdSubEntry]) -> bool {
             .skip(i + 1)
             .any(|b| span(b).is_some_and(|(b0, b1)| a0 < b1 && b0 < a1))
     })
+}
+
+/// [`image_overlaps`] in O(subindices + their bytes): with a bitmap of the
+/// image (one bit per byte) in `scratch` when it has room for it
+/// (`image.len() / 8` bytes, rounded up), else by comparing every pair.
+pub fn image_overlaps_in(
+    image: &[AtomicU8],
+    subs: &[super::ObdSubEntry],
+    scratch: &mut [u8],
+) -> bool {
+    let Some(bits) = scratch.get_mut(..image.len().div_ceil(8)) else {
+        return image_overlaps(image, subs);
+    };
+    let start = image.as_ptr() as usize;
+    let end = start + image.len();
+    bits.fill(0);
+    for s in subs {
+        let a = s.m_pCurrent as usize;
+        if a < start || a >= end {
+            continue;
+        }
+        let b = a.saturating_add(s.size().max(1));
+        if b > end {
+            // Past the image: the bitmap cannot tell.
+            return image_overlaps(image, subs);
+        }
+        for byte in a - start..b - start {
+            let Some(cell) = bits.get_mut(byte / 8) else {
+                return image_overlaps(image, subs);
+            };
+            let mask = 1u8 << (byte % 8);
+            if *cell & mask != 0 {
+                return true;
+            }
+            *cell |= mask;
+        }
+    }
+    false
 }
 
 #[cfg(test)]

@@ -25,6 +25,9 @@ pub use crate::ffi::od_table::{
     CbArg, ObdCallback, ObdEntry, ObdSize, ObdSubEntry, ObdVarEntry, Storage, kind,
 };
 
+use core::sync::atomic::AtomicU8;
+use core::sync::atomic::Ordering::Relaxed;
+
 use crate::error::{CopKernel, OdError, SdoAbort};
 
 /// Byte order of data crossing the dictionary boundary.
@@ -139,7 +142,188 @@ impl Object {
     }
 }
 
-/// Subindex `sub` of `entry` ([`ObjectDictionary::find`]).
+/// One index entry, found once: its subindices are looked up without
+/// searching the dictionary again ([`ObjectDictionary::entry`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Entry {
+    entry: &'static ObdEntry,
+    /// Its subindex table.
+    subs: &'static [ObdSubEntry],
+}
+
+impl Entry {
+    /// Index.
+    pub fn index(&self) -> u16 {
+        self.entry.index()
+    }
+
+    /// The table entry.
+    pub fn obd_entry(&self) -> &'static ObdEntry {
+        self.entry
+    }
+
+    /// The handle of a table entry.
+    #[inline(always)]
+    fn new(entry: &'static ObdEntry) -> Entry {
+        Entry {
+            entry,
+            subs: entry.subs(),
+        }
+    }
+
+    /// Looks up a subindex of this entry (as [`ObjectDictionary::find`]).
+    #[inline]
+    pub fn find(&self, sub: u8) -> Result<Object, OdError> {
+        find_in_entry(self.entry, sub)
+    }
+
+    /// The description of `sub` when it is where it usually is: at position
+    /// `sub` of the table.
+    #[inline(always)]
+    fn at_position(&self, sub: u8) -> Option<&'static ObdSubEntry> {
+        self.subs.get(usize::from(sub)).filter(|d| d.sub() == sub)
+    }
+
+    /// Reads a numeric subindex as an unsigned integer without access
+    /// checks or callbacks, as [`ObjectDictionary::read_uint`] does: the
+    /// value's wire bytes (little-endian) read as a number.
+    #[inline]
+    pub fn read_uint(&self, sub: u8) -> Result<u64, OdError> {
+        // The common case, a number in a plain RAM variable of exactly its
+        // wire size at its usual position, directly: the value's bytes are
+        // the wire bytes (little-endian).
+        if let Some(desc) = self.at_position(sub) {
+            let wire = NUMERIC_WIRE_SIZE
+                .get(usize::from(desc.m_bType))
+                .copied()
+                .unwrap_or(0);
+            if desc.m_dwSize == u32::from(wire) {
+                if let Some(v) = desc.ram_var(0).and_then(load_uint) {
+                    return Ok(v);
+                }
+            }
+        }
+        self.read_uint_general(sub)
+    }
+
+    /// Reads a fixed-size subindex in wire form (little-endian, type width)
+    /// into `out` without access checks or callbacks, as
+    /// [`ObjectDictionary::peek`] with [`ByteOrder::Wire`] does; returns the
+    /// number of bytes. Bytes of `out` beyond them are not touched.
+    #[inline]
+    pub fn read_wire(&self, sub: u8, out: &mut [u8; MAX_FIXED]) -> Result<usize, OdError> {
+        if let Some(desc) = self.at_position(sub) {
+            let wire = NUMERIC_WIRE_SIZE
+                .get(usize::from(desc.m_bType))
+                .copied()
+                .unwrap_or(0);
+            if desc.m_dwSize == u32::from(wire) {
+                if let Some(m) = desc.ram_var(0) {
+                    if let Some(n) = load_wire(m, out) {
+                        return Ok(n);
+                    }
+                }
+            }
+        }
+        self.read_wire_general(sub, out)
+    }
+
+    /// [`Entry::read_wire`] for every other object.
+    #[inline(never)]
+    fn read_wire_general(&self, sub: u8, out: &mut [u8; MAX_FIXED]) -> Result<usize, OdError> {
+        peek_object(&self.find(sub)?, ByteOrder::Wire, out)
+    }
+
+    /// [`Entry::read_uint`] for every other object.
+    #[inline(never)]
+    fn read_uint_general(&self, sub: u8) -> Result<u64, OdError> {
+        read_uint_of(&self.find(sub)?)
+    }
+}
+
+/// The value of a fixed-size object as an unsigned integer: its wire bytes
+/// (little-endian) read as a number, as [`ObjectDictionary::peek`] with
+/// [`ByteOrder::Wire`] gives them.
+fn read_uint_of(obj: &Object) -> Result<u64, OdError> {
+    let mut buf = [0u8; MAX_FIXED];
+    let n = peek_object(obj, ByteOrder::Wire, &mut buf)?;
+    Ok(value::le_to_u64(buf.get(..n).unwrap_or(&[])))
+}
+
+/// Wire size of the numeric types by type code (0: not a number, or not a
+/// known type).
+// Evaluated at compile time: an index out of bounds would not compile.
+#[allow(clippy::indexing_slicing)]
+const NUMERIC_WIRE_SIZE: [u8; 256] = {
+    let mut table = [0u8; 256];
+    let mut code = 0;
+    while code < 256 {
+        if let Some(t) = DataType::from_code(code as u16) {
+            if let Encoding::Numeric { wire, .. } = t.encoding() {
+                table[code] = wire as u8;
+            }
+        }
+        code += 1;
+    }
+    table
+};
+
+/// A native unsigned integer of 1, 2 or 4 bytes in RAM (the sizes of the
+/// fast path of [`Entry::read_uint`]; four bytes, the most common size of
+/// the objects read this way, tested first).
+#[inline(always)]
+fn load_uint(m: &[AtomicU8]) -> Option<u64> {
+    if m.len() > 2 {
+        let [b0, b1, b2, b3] = <&[AtomicU8; 4]>::try_from(m).ok()?;
+        let bytes = [
+            b0.load(Relaxed),
+            b1.load(Relaxed),
+            b2.load(Relaxed),
+            b3.load(Relaxed),
+        ];
+        return Some(u64::from(u32::from_ne_bytes(bytes)));
+    }
+    if let Ok([b0, b1]) = <&[AtomicU8; 2]>::try_from(m) {
+        let bytes = [b0.load(Relaxed), b1.load(Relaxed)];
+        return Some(u64::from(u16::from_ne_bytes(bytes)));
+    }
+    let [b0] = <&[AtomicU8; 1]>::try_from(m).ok()?;
+    Some(u64::from(b0.load(Relaxed)))
+}
+
+/// A native number of 1, 2 or 4 bytes in RAM in wire order (little-endian)
+/// into `out`; `None` for other sizes.
+#[inline(always)]
+fn load_wire(m: &[AtomicU8], out: &mut [u8; MAX_FIXED]) -> Option<usize> {
+    let le = cfg!(target_endian = "little");
+    if m.len() > 2 {
+        let [b0, b1, b2, b3] = <&[AtomicU8; 4]>::try_from(m).ok()?;
+        let [o0, o1, o2, o3, ..] = out;
+        let (x0, x1, x2, x3) = if le {
+            (b0, b1, b2, b3)
+        } else {
+            (b3, b2, b1, b0)
+        };
+        *o0 = x0.load(Relaxed);
+        *o1 = x1.load(Relaxed);
+        *o2 = x2.load(Relaxed);
+        *o3 = x3.load(Relaxed);
+        return Some(4);
+    }
+    if let Ok([b0, b1]) = <&[AtomicU8; 2]>::try_from(m) {
+        let [o0, o1, ..] = out;
+        let (x0, x1) = if le { (b0, b1) } else { (b1, b0) };
+        *o0 = x0.load(Relaxed);
+        *o1 = x1.load(Relaxed);
+        return Some(2);
+    }
+    let [b0] = <&[AtomicU8; 1]>::try_from(m).ok()?;
+    let [o0, ..] = out;
+    *o0 = b0.load(Relaxed);
+    Some(1)
+}
+
+/// Subindex `sub` of `entry` ([`Entry::find`]).
 #[inline(always)]
 fn find_in_entry(entry: &'static ObdEntry, sub: u8) -> Result<Object, OdError> {
     // The usual layout: subindex n at position n (an entry without table
@@ -606,6 +790,14 @@ impl ObjectDictionary {
         self.parts.get(Part::User.slot())?.find(index)
     }
 
+    /// The index entry of `index` as a handle that looks up its subindices
+    /// without searching the index again (several subindices of one
+    /// object, e.g. an SRDO's parameters for its CRC).
+    #[inline]
+    pub fn entry(&self, index: u16) -> Result<Entry, OdError> {
+        self.find_entry(index).map(Entry::new).ok_or(OdError::INDEX)
+    }
+
     /// Looks up index and subindex.
     #[inline(never)]
     pub fn find(&self, index: u16, sub: u8) -> Result<Object, OdError> {
@@ -651,64 +843,12 @@ impl ObjectDictionary {
     /// Reads a value without access checks or callbacks (stack-internal use:
     /// CRC, mapping, diagnostics). Returns the number of bytes written.
     pub fn peek(&self, obj: &Object, order: ByteOrder, out: &mut [u8]) -> Result<usize, OdError> {
-        let mut tmp = [0u8; MAX_FIXED];
-        let fixed = obj.typ.wire_size().is_some();
-        match obj.storage()? {
-            Storage::Ram(m) | Storage::RamString(m) if fixed => {
-                let t = tmp.get_mut(..m.len()).ok_or(OdError::LENGTH)?;
-                value::load(m, t);
-                self.finish_read(obj, order, t, out)
-            }
-            Storage::Rom(r) | Storage::RomString(r) => self.finish_read(obj, order, r, out),
-            Storage::Ram(m) => {
-                let dst = out.get_mut(..m.len()).ok_or(OdError::TOO_LONG)?;
-                value::load(m, dst);
-                Ok(m.len())
-            }
-            Storage::RamString(b) => {
-                let n = string_len(b);
-                let dst = out.get_mut(..n).ok_or(OdError::TOO_LONG)?;
-                value::load(b.get(..n).unwrap_or(&[]), dst);
-                Ok(n)
-            }
-            Storage::Var(v) => {
-                let m = v.data().ok_or(OdError::NO_VAR)?;
-                if fixed {
-                    let t = tmp.get_mut(..m.len()).ok_or(OdError::LENGTH)?;
-                    value::load(m, t);
-                    self.finish_read(obj, order, t, out)
-                } else {
-                    let dst = out.get_mut(..m.len()).ok_or(OdError::TOO_LONG)?;
-                    value::load(m, dst);
-                    Ok(m.len())
-                }
-            }
-        }
-    }
-
-    fn finish_read(
-        &self,
-        obj: &Object,
-        order: ByteOrder,
-        native: &[u8],
-        out: &mut [u8],
-    ) -> Result<usize, OdError> {
-        match order {
-            ByteOrder::Wire => value::native_to_wire(obj.typ, native, out),
-            ByteOrder::Native => {
-                let dst = out.get_mut(..native.len()).ok_or(OdError::TOO_LONG)?;
-                dst.copy_from_slice(native);
-                Ok(native.len())
-            }
-        }
+        peek_object(obj, order, out)
     }
 
     /// Reads a numeric value as an unsigned integer (stack-internal).
     pub fn read_uint(&self, index: u16, sub: u8) -> Result<u64, OdError> {
-        let obj = self.find(index, sub)?;
-        let mut buf = [0u8; MAX_FIXED];
-        let n = self.peek(&obj, ByteOrder::Wire, &mut buf)?;
-        Ok(value::le_to_u64(buf.get(..n).unwrap_or(&[])))
+        self.entry(index)?.read_uint(sub)
     }
 
     /// Reads an object for an application or SDO client: existence and
@@ -995,6 +1135,59 @@ impl ObjectDictionary {
     }
 }
 
+/// [`ObjectDictionary::peek`].
+fn peek_object(obj: &Object, order: ByteOrder, out: &mut [u8]) -> Result<usize, OdError> {
+    let mut tmp = [0u8; MAX_FIXED];
+    let fixed = obj.typ.wire_size().is_some();
+    match obj.storage()? {
+        Storage::Ram(m) | Storage::RamString(m) if fixed => {
+            let t = tmp.get_mut(..m.len()).ok_or(OdError::LENGTH)?;
+            value::load(m, t);
+            finish_read(obj, order, t, out)
+        }
+        Storage::Rom(r) | Storage::RomString(r) => finish_read(obj, order, r, out),
+        Storage::Ram(m) => {
+            let dst = out.get_mut(..m.len()).ok_or(OdError::TOO_LONG)?;
+            value::load(m, dst);
+            Ok(m.len())
+        }
+        Storage::RamString(b) => {
+            let n = string_len(b);
+            let dst = out.get_mut(..n).ok_or(OdError::TOO_LONG)?;
+            value::load(b.get(..n).unwrap_or(&[]), dst);
+            Ok(n)
+        }
+        Storage::Var(v) => {
+            let m = v.data().ok_or(OdError::NO_VAR)?;
+            if fixed {
+                let t = tmp.get_mut(..m.len()).ok_or(OdError::LENGTH)?;
+                value::load(m, t);
+                finish_read(obj, order, t, out)
+            } else {
+                let dst = out.get_mut(..m.len()).ok_or(OdError::TOO_LONG)?;
+                value::load(m, dst);
+                Ok(m.len())
+            }
+        }
+    }
+}
+
+fn finish_read(
+    obj: &Object,
+    order: ByteOrder,
+    native: &[u8],
+    out: &mut [u8],
+) -> Result<usize, OdError> {
+    match order {
+        ByteOrder::Wire => value::native_to_wire(obj.typ, native, out),
+        ByteOrder::Native => {
+            let dst = out.get_mut(..native.len()).ok_or(OdError::TOO_LONG)?;
+            dst.copy_from_slice(native);
+            Ok(native.len())
+        }
+    }
+}
+
 fn restore_one(desc: &ObdSubEntry, element: usize) {
     let Some(def) = desc.default_value() else {
         return;
@@ -1226,5 +1419,73 @@ mod tests {
                 assert_eq!(od.find_entry(index).map(|e| e.index()), Some(index));
             }
         }
+    }
+
+    #[test]
+    fn entry_handles_read_like_the_general_path() {
+        // Every subindex of the reference dictionary (numbers of every width
+        // and sign in RAM and ROM, strings, domains, application variables,
+        // arrays) and of a table with the cases beside the fast path (a
+        // number narrower than its variable, eight bytes, a string) reads
+        // the same through an entry handle and through peek.
+        static V3: [AtomicU8; 4] = decl::zeroed();
+        static V8: [AtomicU8; 8] = decl::zeroed();
+        static VS: [AtomicU8; 5] = decl::zeroed();
+        static VB: [AtomicU8; 1] = decl::zeroed();
+        static VI: [AtomicU8; 2] = decl::zeroed();
+        static EXTRA_SUBS: [ObdSubEntry; 6] = [
+            ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[5]),
+            ObdSubEntry::ram(1, DataType::UInt24, Access::RW, &V3, None),
+            ObdSubEntry::ram(2, DataType::UInt64, Access::RW, &V8, None),
+            ObdSubEntry::ram_string(3, Access::RW, &VS, c"ab"),
+            ObdSubEntry::ram(4, DataType::Bool, Access::RW, &VB, None),
+            ObdSubEntry::ram(5, DataType::Int16, Access::RW, &VI, None),
+        ];
+        static EXTRA: [ObdEntry; 1] = [ObdEntry::new(0x6000, &EXTRA_SUBS, None)];
+        for (v, bytes) in [
+            (&V3[..], &0x00AB_CDEFu32.to_ne_bytes()[..]),
+            (&V8[..], &0x0102_0304_0506_0708u64.to_ne_bytes()[..]),
+            (&VS[..], &b"xyz\0\0"[..]),
+            (&VB[..], &[1u8][..]),
+            (&VI[..], &(-2i16).to_ne_bytes()[..]),
+        ] {
+            value::store(v, bytes);
+        }
+        let reference = crate::testod::dictionary();
+        reference.restore_defaults(0x1000, 0x5FFF);
+        let (generic, manufacturer) = crate::testod::parts();
+        let extra = ObjectDictionary::new(generic, manufacturer, &EXTRA).unwrap();
+        let mut count = 0;
+        for od in [reference, extra] {
+            for e in od.entries() {
+                let entry = od.entry(e.index()).unwrap();
+                assert_eq!(entry.index(), e.index());
+                for sub in 0..=u8::MAX {
+                    let direct = od.find(e.index(), sub);
+                    let via_entry = entry.find(sub);
+                    assert_eq!(direct.is_ok(), via_entry.is_ok());
+                    let Ok(obj) = direct else {
+                        assert!(entry.read_uint(sub).is_err());
+                        continue;
+                    };
+                    count += 1;
+                    let at = format!("{:#06x}/{sub}", e.index());
+                    assert_eq!(entry.read_uint(sub), read_uint_of(&obj), "{at}");
+                    assert_eq!(od.read_uint(e.index(), sub), entry.read_uint(sub), "{at}");
+                    let mut peeked = [0u8; MAX_FIXED];
+                    let mut wire = [0u8; MAX_FIXED];
+                    let n = od.peek(&obj, ByteOrder::Wire, &mut peeked);
+                    assert_eq!(entry.read_wire(sub, &mut wire), n, "{at}");
+                    if let Ok(n) = n {
+                        assert_eq!(wire[..n], peeked[..n], "{at}");
+                    }
+                }
+            }
+        }
+        assert!(count > 30);
+        assert_eq!(
+            crate::testod::dictionary().entry(0x5555).err(),
+            Some(OdError::INDEX)
+        );
     }
 }

@@ -27,9 +27,9 @@
 
 use crc::{CRC_16_XMODEM, Crc, Table};
 
-use super::{MAPP_OFFSET, read_u8, read_u16, read_u32};
+use super::MAPP_OFFSET;
 use crate::error::CopKernel;
-use crate::od::ObjectDictionary;
+use crate::od::{MAX_FIXED, ObjectDictionary};
 
 /// The CRC engine: CRC-16/XMODEM with a 256-entry table (see module docs).
 static CRC16: Crc<u16, Table<1>> = Crc::<u16, Table<1>>::new(&CRC_16_XMODEM);
@@ -44,35 +44,60 @@ pub fn crc16(bytes: &[u8]) -> u16 {
 }
 
 /// Feeds the CRC byte stream of the SRDO with communication index
-/// `commu_index` to `sink`, field by field, read from the dictionary.
+/// `commu_index` to `sink`, field by field, read from the dictionary (one
+/// index lookup per object, its subindices through the entry handle).
 /// `kCopSrdoErrorMapp` when a mapping entry the count names cannot be read.
 pub(crate) fn stream(
     od: &ObjectDictionary,
     commu_index: u16,
     mut sink: impl FnMut(&[u8]),
 ) -> Result<(), CopKernel> {
-    let mapp_index = commu_index + MAPP_OFFSET;
     let missing = CopKernel::SrdoNotExist;
-    sink(&[read_u8(od, commu_index, 1).ok_or(missing)?]);
-    sink(&read_u16(od, commu_index, 2).ok_or(missing)?.to_le_bytes());
-    sink(&[read_u8(od, commu_index, 3).ok_or(missing)?]);
-    sink(&read_u32(od, commu_index, 5).ok_or(missing)?.to_le_bytes());
-    sink(&read_u32(od, commu_index, 6).ok_or(missing)?.to_le_bytes());
-    let count = read_u8(od, mapp_index, 0).ok_or(CopKernel::SrdoErrorMapp)?;
+    let bad = CopKernel::SrdoErrorMapp;
+    let commu = od.entry(commu_index).map_err(|_| missing)?;
+    let param = |sub| commu.read_uint(sub).map_err(|_| missing);
+    sink(&[param(1)? as u8]);
+    sink(&(param(2)? as u16).to_le_bytes());
+    sink(&[param(3)? as u8]);
+    sink(&(param(5)? as u32).to_le_bytes());
+    sink(&(param(6)? as u32).to_le_bytes());
+    let mapp = od.entry(commu_index + MAPP_OFFSET).map_err(|_| bad)?;
+    let count = mapp.read_uint(0).map_err(|_| bad)? as u8;
     sink(&[count]);
-    for sub in 1..=count {
-        let entry = read_u32(od, mapp_index, sub).ok_or(CopKernel::SrdoErrorMapp)?;
+    // (An exclusive range: `1..=count` compiles to a slower loop.)
+    for sub in (1..u16::from(count) + 1).map(|s| s as u8) {
+        // The entry's four bytes as they are on the wire (little-endian;
+        // a narrower type is padded with zeros), without making a number of
+        // them first.
+        let mut wire = [0u8; MAX_FIXED];
+        mapp.read_wire(sub, &mut wire).map_err(|_| bad)?;
+        let [a, b, c, d, ..] = wire;
         sink(&[sub]);
-        sink(&entry.to_le_bytes());
+        sink(&[a, b, c, d]);
     }
     Ok(())
 }
 
-/// The CRC of one SRDO as `CcmCalcSrdoCrc` reports it.
+/// The CRC of one SRDO as `CcmCalcSrdoCrc` reports it, computed field by
+/// field as the stream produces them, with the engine's table
+/// (CRC-16/XMODEM: most significant bit first, start value and final XOR
+/// from the algorithm). A table step shifts the next byte out of the top of
+/// the register, so the four-byte fields (COB-IDs, mapping entries) go in
+/// two bytes at a time: XORed into the register together, then stepped out
+/// one after the other.
 pub(crate) fn calc(od: &ObjectDictionary, commu_index: u16) -> Result<u16, CopKernel> {
-    let mut digest = CRC16.digest();
-    stream(od, commu_index, |b| digest.update(b))?;
-    Ok(digest.finalize())
+    let [table] = CRC16.table();
+    let step = |crc: u16| (crc << 8) ^ table.get(usize::from(crc >> 8)).copied().unwrap_or(0);
+    let byte = |crc: u16, a: u8| step(crc ^ u16::from(a) << 8);
+    let pair = |crc: u16, a: u8, b: u8| step(step(crc ^ u16::from_be_bytes([a, b])));
+    let mut crc = CRC16.algorithm.init;
+    stream(od, commu_index, |bytes| {
+        crc = match *bytes {
+            [a, b, c, d] => pair(pair(crc, a, b), c, d),
+            _ => bytes.iter().fold(crc, |c, &b| byte(c, b)),
+        }
+    })?;
+    Ok(crc ^ CRC16.algorithm.xorout)
 }
 
 /// Copies the CRC byte stream of one SRDO into `out`; returns its length.

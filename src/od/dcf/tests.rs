@@ -350,3 +350,229 @@ fn layout_puts_outputs_after_inputs_aligned() {
     assert_eq!(l.place(0xA580, 3), Some((12, 2)));
     assert_eq!(l.place(0xA040, 3), Some((2, 1)));
 }
+
+// ---------------------------------------------------------------------
+// The index of the entries (parse_indexed): every answer as without it
+// ---------------------------------------------------------------------
+
+/// A small deterministic generator (xorshift64*).
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+    fn below(&mut self, n: u64) -> u64 {
+        self.next() % n
+    }
+}
+
+/// A valid container of `n` random entries: indices from a few objects
+/// (communication, PDO, manufacturer, network variables), repeated
+/// subindices, subindex 0 alone or with others, data sizes 0..=8 (the
+/// attribute matching), entries in random order; with an address segment
+/// when `addresses`.
+fn random_container(rng: &mut Rng, n: usize, addresses: bool) -> Vec<u8> {
+    const INDICES: [u16; 12] = [
+        0x1017, 0x1400, 0x1600, 0x1801, 0x1A01, 0x2000, 0x2001, 0x2100, 0x3000, 0xA000, 0xA4C0,
+        0xA580,
+    ];
+    const DATA: [u8; 8] = [1, 2, 3, 4, 5, 6, 7, 8];
+    let objects = 1 + rng.below(INDICES.len() as u64) as usize;
+    let specs: Vec<EntrySpec<'static>> = (0..n)
+        .map(|_| {
+            let index = INDICES[rng.below(objects as u64) as usize];
+            let sub = match rng.below(4) {
+                0 => 0,
+                _ => rng.below(6) as u8,
+            };
+            let len = rng.below(9) as usize;
+            let attr = match len {
+                0 => 0x60,
+                1 if rng.below(2) == 0 => 0x61,
+                _ => 0x70,
+            };
+            EntrySpec {
+                index,
+                sub,
+                data: &DATA[..len],
+                attr,
+            }
+        })
+        .collect();
+    // Count the candidates with the scanning parser to size the address
+    // segment.
+    let probe = build(&specs, None, None);
+    let candidates = Container::parse(&probe).unwrap().candidate_count();
+    let words: Vec<u16> = (0..candidates)
+        .map(|i| if i % 3 == 2 { NOT_PLACED } else { i as u16 * 2 })
+        .collect();
+    build(&specs, addresses.then_some(&words[..]), None)
+}
+
+/// What `objects()` tells about one index.
+type ObjectAnswers<'a> = ((u16, Option<u8>, Subindices), Vec<(Entry<'a>, Entry<'a>)>);
+
+/// Compares every answer of the indexed container with the scanning one
+/// (under Miri, which is slow, for some of the indices and entries).
+fn same_answers(bytes: &[u8]) {
+    let scan = Container::parse(bytes).unwrap();
+    let len =
+        index_scratch_len(scan.len(), scan.index_segment().len(), scan.has_addresses()).unwrap();
+    let mut scratch = vec![0xA5u8; len + 3];
+    let fast = Container::parse_indexed(bytes, &mut scratch).unwrap();
+    assert!(fast.is_indexed());
+    assert_eq!(fast.index_len(), len);
+    assert_eq!(fast.candidate_count(), scan.candidate_count());
+    assert_eq!(
+        fast.addressed().collect::<Vec<_>>(),
+        scan.addressed().collect::<Vec<_>>()
+    );
+    assert_eq!(
+        fast.indices().collect::<Vec<_>>(),
+        scan.indices().collect::<Vec<_>>()
+    );
+    let sample = |n: usize| if cfg!(miri) { n.div_ceil(8).max(1) } else { 1 };
+    if !cfg!(miri) || scan.len() <= 64 {
+        fn objects<'a>(c: &Container<'a>) -> Vec<ObjectAnswers<'a>> {
+            c.objects()
+                .map(|o| {
+                    let head = (o.index(), o.missing_count(), o.subindices());
+                    (head, o.collect())
+                })
+                .collect()
+        }
+        assert_eq!(objects(&fast), objects(&scan));
+    }
+    let mut indices: Vec<u16> = scan.entries().map(|e| e.index).collect();
+    indices.sort_unstable();
+    indices.dedup();
+    let step = sample(indices.len());
+    let mut indices: Vec<u16> = indices.into_iter().step_by(step).collect();
+    indices.extend([0x0000, 0x1000, 0x1FFF, 0x2002, 0xA001, 0xFFFF]);
+    for &index in &indices {
+        assert_eq!(
+            fast.subindices(index),
+            scan.subindices(index),
+            "{index:#06x}"
+        );
+        assert_eq!(fast.first_position(index), scan.first_position(index));
+        assert_eq!(
+            fast.subs_of(index).collect::<Vec<_>>(),
+            scan.subs_of(index).collect::<Vec<_>>(),
+            "{index:#06x}"
+        );
+        for sub in [0u8, 1, 2, 3, 4, 5, 9, 0xFF] {
+            assert_eq!(
+                fast.has_other_subs(index, sub),
+                scan.has_other_subs(index, sub),
+                "{index:#06x}/{sub}"
+            );
+            assert_eq!(
+                fast.last_occurrence(index, sub),
+                scan.last_occurrence(index, sub),
+                "{index:#06x}/{sub}"
+            );
+        }
+    }
+    for (first, last) in [
+        (0x0000, 0xFFFF),
+        (0x1400, 0x1BFF),
+        (0xA000, 0xA8FF),
+        (0x1017, 0x1017),
+        (0x5000, 0x9FFF),
+    ] {
+        assert_eq!(
+            fast.entries_in(first, last).collect::<Vec<_>>(),
+            scan.entries_in(first, last).collect::<Vec<_>>(),
+            "{first:#06x}..={last:#06x}"
+        );
+    }
+    for e in scan.entries().step_by(sample(scan.len())) {
+        assert_eq!(fast.entry(e.position as usize), Some(e));
+        assert_eq!(
+            fast.is_first_occurrence_at(e.position as usize),
+            fast.is_first_occurrence(&e)
+        );
+        assert_eq!(fast.is_first_occurrence(&e), scan.is_first_occurrence(&e));
+        assert_eq!(fast.has_sub_zero(&e), scan.has_sub_zero(&e));
+        assert_eq!(fast.entry_has_other_subs(&e), scan.entry_has_other_subs(&e));
+        assert_eq!(fast.is_candidate(&e), scan.is_candidate(&e));
+        // (Without address segment the scan asks every subindex 0 before
+        // `e` whether it is a candidate: too slow for Miri.)
+        if !cfg!(miri) || scan.has_addresses() {
+            assert_eq!(fast.address_word(&e), scan.address_word(&e));
+        }
+        assert_eq!(fast.first_occurrence(&e), scan.first_occurrence(&e));
+        assert_eq!(fast.is_last_occurrence(&e), scan.is_last_occurrence(&e));
+        assert_eq!(fast.is_first_of_index(&e), scan.is_first_of_index(&e));
+    }
+    // The bytes before the index are not touched.
+    let start = scratch.len() - len;
+    assert!(scratch[..start].iter().all(|b| *b == 0xA5));
+}
+
+#[test]
+fn the_index_gives_the_answers_of_a_scan() {
+    same_answers(&sample());
+    same_answers(&build(&[], None, None));
+    let mut rng = Rng(0x0123_4567_89AB_CDEF);
+    let (rounds, most) = if cfg!(miri) { (8, 24) } else { (400, 150) };
+    for round in 0..rounds {
+        let n = match round % 4 {
+            0 => rng.below(4) as usize,
+            1 => rng.below(20) as usize,
+            _ => rng.below(most) as usize,
+        };
+        same_answers(&random_container(&mut rng, n, round % 2 == 1));
+    }
+}
+
+#[test]
+fn the_index_of_a_large_container_uses_wide_positions() {
+    // An index segment beyond 64 KiB: 4-byte positions and offsets.
+    // Under Miri fewer, larger entries.
+    let (n, size, spread) = if cfg!(miri) {
+        (150u32, 450, 50)
+    } else {
+        (500, 0, 300)
+    };
+    let mut rng = Rng(42);
+    let data = [0x5Au8; 500];
+    let specs: Vec<EntrySpec<'_>> = (0..n)
+        .map(|i| EntrySpec {
+            index: 0x2000 + (rng.below(50) as u16),
+            sub: (i % 7) as u8,
+            data: &data[..size + rng.below(spread) as usize],
+            attr: 0x60,
+        })
+        .collect();
+    let bytes = build(&specs, None, None);
+    assert!(Container::parse(&bytes).unwrap().index_segment().len() > 0xFFFF);
+    same_answers(&bytes);
+}
+
+#[test]
+fn a_scratch_too_small_means_no_index_and_the_same_answers() {
+    let bytes = sample();
+    let c = Container::parse(&bytes).unwrap();
+    let need = index_scratch_len(c.len(), c.index_segment().len(), c.has_addresses()).unwrap();
+    let mut scratch = vec![0u8; need - 1];
+    let small = Container::parse_indexed(&bytes, &mut scratch).unwrap();
+    assert!(!small.is_indexed());
+    assert_eq!(small.index_len(), 0);
+    assert_eq!(small.candidate_count(), c.candidate_count());
+    // Refusals are the same with and without index.
+    let mut bad = bytes.clone();
+    let addr = u32::from_le_bytes(bad[16..20].try_into().unwrap()) as usize;
+    bad[addr] ^= 0; // unchanged, then one word too few:
+    put32(&mut bad, 20, 6);
+    let mut scratch = vec![0u8; 4096];
+    assert_eq!(
+        Container::parse_indexed(&bad, &mut scratch).unwrap_err(),
+        Container::parse(&bad).unwrap_err()
+    );
+}
