@@ -41,8 +41,18 @@ use crate::store::StoreRestore;
 use crate::syncp::SyncProducer;
 use crate::wire::emcy::Emergency;
 use crate::wire::nmt::{self, NmtCs};
+use crate::wire::srdo::{COB_ID_COUNT, COB_ID_MIN, GFC_ID};
 
 mod services;
+
+/// True for the identifiers the SRDO module receives: the GFC (0x001) and
+/// the SRDO range 0x101..=0x180, 11-bit (an extended identifier has its
+/// flag bit in [`CanId::raw`] and is never in the range).
+#[inline(always)]
+const fn srdo_or_gfc_id(id: CanId) -> bool {
+    let raw = id.raw();
+    raw == GFC_ID as u32 || raw.wrapping_sub(COB_ID_MIN as u32) < COB_ID_COUNT as u32
+}
 
 /// Local NMT commands (`tNmtCommand`, `CcmNmtsExecCommand`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -405,7 +415,21 @@ impl Stack {
 
     /// Runs the stack until it has an event for the application or nothing
     /// left to do in this cycle.
+    #[inline(always)]
     pub fn poll(&mut self, port: &mut impl CanPort, now: Ticks) -> Option<Event> {
+        // The usual re-entry after the application handled an event: the
+        // next one is already queued and goes out without entering the
+        // cycle's state machine.
+        if let Some(e) = self.queue.pop_event() {
+            return Some(e);
+        }
+        self.poll_work(port, now)
+    }
+
+    /// [`Stack::poll`]: internal work, the cycle's phases (out of line, so
+    /// that taking a queued event does not pay for its register saves).
+    #[inline(never)]
+    fn poll_work(&mut self, port: &mut impl CanPort, now: Ticks) -> Option<Event> {
         loop {
             if let Some(a) = self.queue.pop() {
                 match a {
@@ -517,6 +541,24 @@ impl Stack {
             return;
         }
         let f = &rx.frame;
+        // SRDO and GFC identifiers first, with one range test: NMT (0x000),
+        // error control and guarding (0x701..=0x77F) and the emergencies of
+        // the consumer (0x081..=0x0FF) cannot have them, so their decoding
+        // is skipped. A frame the SRDO module does not take goes on to the
+        // PDO and SDO services as before.
+        if srdo_or_gfc_id(f.id) {
+            if self.state == NmtState::Stopped {
+                return;
+            }
+            if self
+                .srdo
+                .on_frame(&self.od, self.state, rx, &mut self.queue)
+            {
+                return;
+            }
+            self.on_service_frame(port, rx, now);
+            return;
+        }
         if let Some(cmd) = nmt::decode_command(f) {
             if cmd.node == 0 || cmd.node == self.node_id {
                 self.nmt_command(cmd.cs);
@@ -545,12 +587,13 @@ impl Stack {
         if self.emcc.on_frame(f, &mut self.queue) {
             return;
         }
-        if self
-            .srdo
-            .on_frame(&self.od, self.state, rx, &mut self.queue)
-        {
-            return;
-        }
+        // (The SRDO module takes only the identifiers handled above.)
+        self.on_service_frame(port, rx, now);
+    }
+
+    /// The rest of [`Stack::on_frame`]: PDO, SDO client and SDO server.
+    fn on_service_frame(&mut self, port: &mut impl CanPort, rx: &RxFrame, now: Ticks) {
+        let f = &rx.frame;
         let (od, q, emcy) = (&self.od, &mut self.queue, &mut self.emcy);
         if self.pdo.on_frame(od, self.state, rx, port, now, q, emcy) {
             return;

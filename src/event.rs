@@ -221,15 +221,32 @@ impl ActionQueue {
         true
     }
 
-    /// Takes the first action.
+    /// Takes the first action (copied out; its slot is simply left behind,
+    /// only the `len` slots from `head` count).
+    #[inline]
     pub fn pop(&mut self) -> Option<Action> {
         if self.len == 0 {
             return None;
         }
-        let a = self.buf.get_mut(self.head).and_then(Option::take);
+        let a = self.buf.get(self.head).copied().flatten();
         self.head = (self.head + 1) % QUEUE_CAPACITY;
         self.len -= 1;
         a
+    }
+
+    /// Takes the first action when it is an event for the application
+    /// (internal work stays queued), as [`ActionQueue::pop`].
+    #[inline]
+    pub fn pop_event(&mut self) -> Option<Event> {
+        if self.len == 0 {
+            return None;
+        }
+        let Some(Some(Action::Emit(e))) = self.buf.get(self.head).copied() else {
+            return None;
+        };
+        self.head = (self.head + 1) % QUEUE_CAPACITY;
+        self.len -= 1;
+        Some(e)
     }
 
     /// Drops everything.
@@ -252,6 +269,28 @@ mod tests {
         assert_eq!(q.pop(), Some(Action::Emit(Event::Gfc)));
         assert_eq!(q.pop(), Some(Action::Do(Internal::Reconfigure)));
         assert_eq!(q.pop(), None);
+    }
+
+    #[test]
+    fn events_are_taken_before_internal_work_only_in_order() {
+        let mut q = ActionQueue::new();
+        assert_eq!(q.pop_event(), None);
+        assert!(q.emit(Event::Gfc));
+        assert!(q.schedule(Internal::Reconfigure));
+        assert!(q.emit(Event::SrdoEvent(0x1301)));
+        assert_eq!(q.pop_event(), Some(Event::Gfc));
+        // Internal work in front: nothing is taken.
+        assert_eq!(q.pop_event(), None);
+        assert_eq!(q.len(), 2);
+        assert_eq!(q.pop(), Some(Action::Do(Internal::Reconfigure)));
+        assert_eq!(q.pop_event(), Some(Event::SrdoEvent(0x1301)));
+        assert!(q.is_empty());
+        // Around the end of the ring.
+        for i in 0..3 * QUEUE_CAPACITY as u16 {
+            assert!(q.emit(Event::SrdoEvent(i)));
+            assert_eq!(q.pop_event(), Some(Event::SrdoEvent(i)));
+        }
+        assert!(q.is_empty());
     }
 
     #[test]

@@ -306,3 +306,20 @@ fn emergency_records_and_sends() {
     );
     assert_eq!(decl::get(&ERR_REG), [0x11]);
 }
+
+#[test]
+fn srdo_dispatch_range_is_what_the_srdo_module_takes() {
+    // The range test of `on_frame` agrees with the GFC and SRDO identifier
+    // decoding of the wire module for every 11-bit identifier and never
+    // matches an extended one.
+    use crate::wire::srdo as w;
+    for raw in 0..=0x7FFu16 {
+        let id = CanId::std_masked(raw);
+        let frame = CanFrame::new(id, &[]);
+        let srdo = w::is_gfc_id(&frame) || w::classify(id).is_some();
+        assert_eq!(srdo_or_gfc_id(id), srdo, "id {raw:#05x}");
+    }
+    for raw in [0x001u32, 0x101, 0x180, 0x1FFF_FFFF] {
+        assert!(!srdo_or_gfc_id(CanId::ext(raw).unwrap()));
+    }
+}

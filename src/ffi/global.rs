@@ -10,6 +10,7 @@
 //! call any `Ccm*` function.
 
 use core::cell::{Cell, UnsafeCell};
+use core::mem::MaybeUninit;
 
 use super::driver::{CdrvPort, TgtClock};
 use super::types::{
@@ -62,11 +63,20 @@ pub const MAX_INSTANCES: usize = 8;
 pub const MAX_INSTANCES: usize = 1;
 
 struct Global {
-    instances: UnsafeCell<[Option<Instance>; MAX_INSTANCES]>,
+    /// The instances' storage. Slot `i` holds an initialised [`Instance`]
+    /// exactly when bit `i` of `live` is set. Uninitialised storage, so that
+    /// the global lies in .bss (zeroed at start-up) rather than in .data,
+    /// which would keep an image of the whole stack in flash.
+    instances: UnsafeCell<[MaybeUninit<Instance>; MAX_INSTANCES]>,
+    /// Bit `i`: slot `i` is initialised.
+    live: Cell<u8>,
     current: Cell<usize>,
     busy: Cell<bool>,
     pumping: Cell<bool>,
 }
+
+// One bit of `live` per instance.
+const _: () = assert!(MAX_INSTANCES <= 8);
 
 // SAFETY: the C API is documented as single-threaded (one thread calls the
 // Ccm* functions; callbacks run inside those calls). `busy` turns accidental
@@ -74,18 +84,37 @@ struct Global {
 unsafe impl Sync for Global {}
 
 static GLOBAL: Global = Global {
-    instances: UnsafeCell::new([const { None }; MAX_INSTANCES]),
+    instances: UnsafeCell::new([const { MaybeUninit::uninit() }; MAX_INSTANCES]),
+    live: Cell::new(0),
     current: Cell::new(0),
     busy: Cell::new(false),
     pumping: Cell::new(false),
 };
 
-/// Borrows the current instance slot; `busy` must be held.
-fn slot() -> Option<&'static mut Option<Instance>> {
+/// The `live` bit of the current slot (0 for an index out of range, which
+/// `select` never sets).
+fn current_bit() -> u8 {
+    let i = GLOBAL.current.get();
+    if i < MAX_INSTANCES { 1 << i } else { 0 }
+}
+
+/// Borrows the current slot's storage; `busy` must be held.
+fn slot() -> Option<&'static mut MaybeUninit<Instance>> {
     // SAFETY: only called while `busy` is true, so no other reference into
     // the cell exists until the caller clears `busy`.
     let all = unsafe { &mut *GLOBAL.instances.get() };
     all.get_mut(GLOBAL.current.get())
+}
+
+/// Borrows the current instance if there is one; `busy` must be held.
+fn instance() -> Option<&'static mut Instance> {
+    if GLOBAL.live.get() & current_bit() == 0 {
+        return None;
+    }
+    let s = slot()?;
+    // SAFETY: the slot's `live` bit is set, so `install` initialised it and
+    // `remove` has not taken it out since.
+    Some(unsafe { s.assume_init_mut() })
 }
 
 /// The instance the C API addresses (always 0 on a target).
@@ -110,7 +139,7 @@ pub fn with<R>(f: impl FnOnce(&mut Instance) -> R) -> Result<R, CopKernel> {
     if GLOBAL.busy.replace(true) {
         return Err(CopKernel::NoResource);
     }
-    let r = match slot().and_then(|s| s.as_mut()) {
+    let r = match instance() {
         Some(i) => Ok(f(i)),
         None => Err(CopKernel::IllegalInstance),
     };
@@ -124,9 +153,11 @@ pub fn install(i: Instance) -> Result<(), CopKernel> {
     if GLOBAL.busy.replace(true) {
         return Err(CopKernel::NoResource);
     }
+    let bit = current_bit();
     let r = match slot() {
-        Some(s) if s.is_none() => {
-            *s = Some(i);
+        Some(s) if bit != 0 && GLOBAL.live.get() & bit == 0 => {
+            s.write(i);
+            GLOBAL.live.set(GLOBAL.live.get() | bit);
             Ok(())
         }
         _ => Err(CopKernel::NoFreeInstance),
@@ -140,9 +171,18 @@ pub fn remove() -> Result<Instance, CopKernel> {
     if GLOBAL.busy.replace(true) {
         return Err(CopKernel::NoResource);
     }
-    let r = slot()
-        .and_then(Option::take)
-        .ok_or(CopKernel::IllegalInstance);
+    let bit = current_bit();
+    let r = match slot() {
+        Some(s) if GLOBAL.live.get() & bit != 0 => {
+            GLOBAL.live.set(GLOBAL.live.get() & !bit);
+            // SAFETY: the `live` bit was set, so the slot holds an
+            // initialised instance; clearing the bit first means it is
+            // moved out exactly once and never read again until `install`
+            // writes a new one.
+            Ok(unsafe { s.assume_init_read() })
+        }
+        _ => Err(CopKernel::IllegalInstance),
+    };
     GLOBAL.busy.set(false);
     r
 }
@@ -278,5 +318,59 @@ pub extern "C" fn CopSimSelectInstance(
         CopKernel::Successful.code()
     } else {
         CopKernel::IllegalInstance.code()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn instance(node: u8) -> Instance {
+        Instance {
+            stack: Stack::new(crate::testod::dictionary(), node).unwrap(),
+            port: CdrvPort,
+            callbacks: Callbacks::default(),
+        }
+    }
+
+    #[test]
+    fn instances_are_installed_used_and_removed_once() {
+        // The only test of this binary that uses the process-wide instances.
+        let slot = MAX_INSTANCES - 1;
+        assert!(select(slot));
+        assert_eq!(with(|_| ()).err(), Some(CopKernel::IllegalInstance));
+        assert_eq!(remove().err(), Some(CopKernel::IllegalInstance));
+        assert_eq!(install(instance(5)), Ok(()));
+        assert_eq!(install(instance(6)).err(), Some(CopKernel::NoFreeInstance));
+        assert_eq!(with(|i| i.stack.node_id()), Ok(5));
+        // While the instance is in use, everything else is refused.
+        let nested = with(|i| {
+            i.stack.node_id();
+            (
+                with(|_| ()).err(),
+                select(0),
+                install(instance(7)).err(),
+                remove().err(),
+            )
+        });
+        let busy = Some(CopKernel::NoResource);
+        assert_eq!(nested, Ok((busy, false, busy, busy)));
+        assert_eq!(current(), slot);
+        if slot > 0 {
+            // Another slot is empty and independent.
+            assert!(select(0));
+            assert_eq!(with(|_| ()).err(), Some(CopKernel::IllegalInstance));
+            assert!(select(slot));
+        }
+        let removed = remove().unwrap();
+        assert_eq!(removed.stack.node_id(), 5);
+        assert_eq!(with(|_| ()).err(), Some(CopKernel::IllegalInstance));
+        assert_eq!(remove().err(), Some(CopKernel::IllegalInstance));
+        // The slot takes a new instance after the removal.
+        assert_eq!(install(instance(9)), Ok(()));
+        assert_eq!(with(|i| i.stack.node_id()), Ok(9));
+        assert_eq!(remove().map(|i| i.stack.node_id()), Ok(9));
+        assert!(!select(MAX_INSTANCES));
+        assert!(select(0));
     }
 }

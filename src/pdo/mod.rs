@@ -391,6 +391,13 @@ pub struct Pdo {
     resubscribe: bool,
     cursor: usize,
     housekeeping_done: bool,
+    /// A whole pass of [`Pdo::poll`] found nothing armed or pending (no
+    /// RPDO deadline or data, no TPDO of a usable PDO with a timer or a
+    /// trigger, no `CcmSignalCheckVar`), and nothing has changed since: the
+    /// timer work of a cycle has nothing to do. Every method that changes
+    /// the module's state clears it ([`Pdo::wake`]); time alone cannot make
+    /// anything due while nothing is armed.
+    quiet: bool,
 }
 
 impl Default for Pdo {
@@ -412,7 +419,15 @@ impl Pdo {
             resubscribe: true,
             cursor: 0,
             housekeeping_done: false,
+            quiet: false,
         }
+    }
+
+    /// Something may have become due: the next [`Pdo::poll`] looks at
+    /// every PDO again.
+    #[inline]
+    fn wake(&mut self) {
+        self.quiet = false;
     }
 
     fn channel(&self, p: PdoIndex) -> Option<&Channel> {
@@ -476,6 +491,7 @@ impl Pdo {
     /// PDO and the SYNC objects, adds the node-ID to predefined connection
     /// set defaults and subscribes the identifiers.
     pub fn reconfigure(&mut self, od: &ObjectDictionary, node: u8, port: &mut impl CanPort) {
+        self.wake();
         for n in 0..self.rx.len() {
             predefined_node_id(od, Direction::Rx, n, node);
         }
@@ -509,6 +525,7 @@ impl Pdo {
     /// Sets the SYNC consumer directly (`CcmConfigSyncConsumer` on a
     /// dictionary without 0x1005/0x1007).
     pub fn set_sync(&mut self, cob: u32, window_us: u32) -> CopResult {
+        self.wake();
         wire::check_identifier(cob & !COB_INVALID, crate::config::CDRV_CAN20B)
             .map_err(|_| CopKernel::InvalidParam)?;
         if cob & wire::COB_NO_RTR != 0 {
@@ -522,6 +539,7 @@ impl Pdo {
 
     /// Re-reads the SYNC objects (`CcmInitSyncConsumer`).
     pub fn reload_sync(&mut self, od: &ObjectDictionary) {
+        self.wake();
         self.load_sync(od);
         self.resubscribe = true;
     }
@@ -538,6 +556,7 @@ impl Pdo {
 
     /// Module hook: a write to one of this module's objects happened.
     pub fn after_store(&mut self, od: &ObjectDictionary, obj: &Object, now: Ticks) {
+        self.wake();
         let index = obj.index();
         if matches!(index, 0x1005..=0x1007) {
             self.load_sync(od);
@@ -590,6 +609,7 @@ impl Pdo {
         notify: Option<bool>,
         static_data: Option<Option<&'static [AtomicU8]>>,
     ) -> CopResult {
+        self.wake();
         let p = self.covers(od, commu_index).ok_or(CopKernel::PdoNotExist)?;
         let ch = self.channel_mut(p).ok_or(CopKernel::PdoNotExist)?;
         if let Some(n) = notify {
@@ -606,6 +626,7 @@ impl Pdo {
 
     /// Reacts to an NMT state change: PDOs run in OPERATIONAL only.
     pub fn on_state(&mut self, state: NmtState, now: Ticks) {
+        self.wake();
         let operational = state == NmtState::Operational;
         if operational && !self.operational {
             for ch in self.tx.iter_mut() {
@@ -645,6 +666,7 @@ impl Pdo {
     /// TPDOs are sent in the next cycle (inhibit time permitting), type 0
     /// with the next SYNC; other types ignore events.
     pub fn signal(&mut self, commu_index: u16) -> CopResult {
+        self.wake();
         let p = self
             .served(commu_index)
             .filter(|p| p.dir == Direction::Tx)
@@ -663,6 +685,7 @@ impl Pdo {
         od: &ObjectDictionary,
         mut is_var: impl FnMut(&Object) -> bool,
     ) -> CopResult {
+        self.wake();
         let mut found = false;
         for ch in self.tx.iter_mut() {
             if !ch.usable() || ch.static_data.is_some() {
@@ -693,6 +716,7 @@ impl Pdo {
     /// `CcmSignalCheckVar`: in the next cycle every event-driven or type 0
     /// TPDO whose data differ from what it sent last is signalled.
     pub fn signal_check_var(&mut self) {
+        self.wake();
         self.check_var = true;
     }
 
@@ -701,11 +725,13 @@ impl Pdo {
     /// (received RPDOs are kept, the latest per PDO, and applied afterwards;
     /// due TPDOs wait).
     pub fn enter_critical(&mut self) {
+        self.wake();
         self.lock_depth = self.lock_depth.saturating_add(1);
     }
 
     /// `CcmLeaveCriticalSectionPdoProcess`.
     pub fn leave_critical(&mut self) {
+        self.wake();
         self.lock_depth = self.lock_depth.saturating_sub(1);
     }
 
@@ -727,6 +753,7 @@ impl Pdo {
         now: Ticks,
         q: &mut ActionQueue,
     ) -> CopResult {
+        self.wake();
         let p = self
             .served(commu_index)
             .filter(|p| p.dir == Direction::Tx)
@@ -754,6 +781,25 @@ impl Pdo {
     /// remote request for a TPDO of this node.
     #[allow(clippy::too_many_arguments)]
     pub fn on_frame(
+        &mut self,
+        od: &ObjectDictionary,
+        state: NmtState,
+        rx: &RxFrame,
+        port: &mut impl CanPort,
+        now: Ticks,
+        q: &mut ActionQueue,
+        emcy: &mut EmcyProducer,
+    ) -> bool {
+        let taken = self.take_frame(od, state, rx, port, now, q, emcy);
+        if taken {
+            self.wake();
+        }
+        taken
+    }
+
+    /// [`Pdo::on_frame`] without the wake-up.
+    #[allow(clippy::too_many_arguments)]
+    fn take_frame(
         &mut self,
         od: &ObjectDictionary,
         state: NmtState,
@@ -843,6 +889,7 @@ impl Pdo {
     /// [`Pdo::poll`] so that one received frame never queues more than one
     /// event.
     fn on_sync(&mut self, at: Ticks) {
+        self.wake();
         self.sync.last = Some(at);
         for ch in self.rx.iter_mut() {
             if tx_type::is_sync(ch.cfg.tx_type) {
@@ -899,7 +946,7 @@ impl Pdo {
             if self.resubscribe {
                 self.subscribe(port);
             }
-            if state == NmtState::Operational {
+            if state == NmtState::Operational && !self.quiet {
                 self.check_deadlines(od, port, now, emcy);
                 self.event_timers(now);
                 if self.check_var && self.lock_depth == 0 {
@@ -908,7 +955,7 @@ impl Pdo {
                 }
             }
         }
-        if state != NmtState::Operational || self.lock_depth > 0 {
+        if state != NmtState::Operational || self.lock_depth > 0 || self.quiet {
             return true;
         }
         let total = self.rx.len() + self.tx.len();
@@ -923,7 +970,26 @@ impl Pdo {
                 return false;
             }
         }
+        self.quiet = self.nothing_armed();
         true
+    }
+
+    /// True when no PDO has anything that can become due by itself: no
+    /// RPDO deadline or data waiting, no usable TPDO with an event timer or
+    /// a pending trigger, no `CcmSignalCheckVar` waiting.
+    fn nothing_armed(&self) -> bool {
+        !self.check_var
+            && self
+                .rx
+                .iter()
+                .all(|c| c.deadline.is_none() && c.pending.is_none())
+            && self.tx.iter().all(|c| {
+                !c.usable()
+                    || (c.event_deadline.is_none()
+                        && !c.event_pending
+                        && !c.sync_due
+                        && !c.rtr_pending)
+            })
     }
 
     fn check_deadlines(

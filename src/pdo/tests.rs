@@ -8,6 +8,7 @@ use super::decl::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, 
 use super::mapping::{Rules, check_entry, check_mapping, check_write, refuse};
 use super::*;
 use crate::od::{Access, DataType, NoHooks, ObdEntry, ObdSubEntry, decl as od_decl};
+use crate::port::CanFrame;
 
 static V1400: CommuVars = CommuVars::new();
 static D1400: CommuDefaults = CommuDefaults::new(0x8000_0200, 255, 0, 0);
@@ -434,4 +435,61 @@ fn pdo_index_decoding() {
     } else {
         assert_eq!(PDO_MAX_MAPPENTRIES, 64, "bit mapping, granularity 64");
     }
+}
+
+/// A port that records what is sent.
+#[derive(Default)]
+struct Recorder(Vec<CanFrame>);
+
+impl CanPort for Recorder {
+    fn send(&mut self, frame: &CanFrame, _: Priority) -> CopResult {
+        self.0.push(*frame);
+        Ok(())
+    }
+    fn receive(&mut self) -> Option<RxFrame> {
+        None
+    }
+}
+
+/// One processing cycle of the module alone; `true` when its work was done.
+fn cycle(pdo: &mut Pdo, od: &ObjectDictionary, port: &mut Recorder, now: Ticks) -> bool {
+    let mut q = ActionQueue::new();
+    let mut emcy = EmcyProducer::new();
+    pdo.begin_cycle();
+    pdo.poll(od, NmtState::Operational, port, now, &mut q, &mut emcy)
+}
+
+#[test]
+fn idle_cycles_skip_the_pdos_until_something_changes() {
+    let (_g, od) = fresh();
+    let mut port = Recorder::default();
+    let mut pdo = Pdo::new();
+    pdo.reconfigure(&od, 5, &mut port);
+    pdo.on_state(NmtState::Operational, Ticks(0));
+    // TPDO 0x185, event-driven without event timer: nothing is armed after
+    // the first pass, so the next cycles have nothing to do.
+    assert!(cycle(&mut pdo, &od, &mut port, Ticks(1)));
+    assert!(pdo.quiet);
+    assert!(cycle(&mut pdo, &od, &mut port, Ticks(2)));
+    assert!(port.0.is_empty());
+    // An application event wakes the module: the TPDO goes out in the
+    // next cycle, and afterwards the module is quiet again.
+    pdo.signal(0x1800).unwrap();
+    assert!(!pdo.quiet);
+    assert!(cycle(&mut pdo, &od, &mut port, Ticks(3)));
+    assert_eq!(port.0.len(), 1);
+    assert_eq!(port.0[0].id, CanId::std_masked(0x185));
+    assert!(pdo.quiet);
+    // An event timer keeps it awake: written over the dictionary hook.
+    write(&od, 0x1800, 5, 10).unwrap();
+    let obj = od.find(0x1800, 5).unwrap();
+    pdo.after_store(&od, &obj, Ticks(3));
+    assert!(cycle(&mut pdo, &od, &mut port, Ticks(4)));
+    assert!(!pdo.quiet);
+    // 10 ms = 100 ticks later the timer sends the TPDO again.
+    assert!(cycle(&mut pdo, &od, &mut port, Ticks(104)));
+    assert_eq!(port.0.len(), 2);
+    // Leaving OPERATIONAL and coming back wakes it as well.
+    pdo.on_state(NmtState::PreOperational, Ticks(105));
+    assert!(!pdo.quiet);
 }
