@@ -316,7 +316,8 @@ for v in arm-s arm-z thumb-s thumb-z; do
 done
 cat <<EOF
 
-Default capacities (64 SRDOs, 8 + 8 PDOs). The stack instance lies in .data.
+Default capacities (64 SRDOs, 8 + 8 PDOs). The stack instance lies in .bss
+(zeroed at start-up; no flash image of it).
 
 ## RAM of the stack on the target (\`size_of\`, bytes)
 
