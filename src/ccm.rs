@@ -456,10 +456,18 @@ impl Stack {
                         self.phase = Phase::Receive;
                     }
                 }
-                Phase::Receive => match port.receive() {
-                    Some(f) => self.on_frame(port, &f, now),
-                    None => self.phase = Phase::SrdoTimers,
-                },
+                Phase::Receive => {
+                    // Frame after frame while they queue nothing.
+                    while let Some(f) = port.receive() {
+                        self.on_frame(port, &f, now);
+                        if !self.queue.is_empty() {
+                            break;
+                        }
+                    }
+                    if self.queue.is_empty() {
+                        self.phase = Phase::SrdoTimers;
+                    }
+                }
                 Phase::SrdoTimers => {
                     if self.srdo.poll(&self.od, self.state, now, &mut self.queue) {
                         self.phase = Phase::SyncProducer;

@@ -248,14 +248,13 @@ mod flag {
 /// The run-time state of one SRDO (at most 64 bytes, a test checks).
 #[derive(Clone, Copy, Debug)]
 struct Slot {
-    /// Normal data of the held first frame (little-endian).
-    held: u64,
+    /// Normal data of the held first frame (little-endian, low and high
+    /// 32 bits, so that the slot needs no 8-byte alignment).
+    held: [u32; 2],
     /// Receive time of the held first frame.
     held_at: Ticks,
     /// Receive: SCT deadline; transmit: refresh deadline.
     deadline: Ticks,
-    /// Transmit: earliest first transmission after entering OPERATIONAL.
-    tx_from: Ticks,
     /// Refresh time / SCT in ticks.
     sct: u32,
     /// SRVT in ticks.
@@ -282,10 +281,9 @@ const _: () = assert!(core::mem::size_of::<Slot>() <= 64);
 
 impl Slot {
     const EMPTY: Slot = Slot {
-        held: 0,
+        held: [0; 2],
         held_at: Ticks(0),
         deadline: Ticks(0),
-        tx_from: Ticks(0),
         sct: 0,
         srvt: 0,
         cob1: 0,
@@ -299,6 +297,19 @@ impl Slot {
 
     fn commu_index(&self) -> u16 {
         COMMU_BASE + u16::from(self.number)
+    }
+
+    /// The held first frame's data.
+    #[inline(always)]
+    fn held(&self) -> u64 {
+        let [lo, hi] = self.held;
+        u64::from(lo) | u64::from(hi) << 32
+    }
+
+    /// Holds a first frame's data.
+    #[inline(always)]
+    fn hold(&mut self, data: u64) {
+        self.held = [data as u32, (data >> 32) as u32];
     }
 }
 
@@ -324,6 +335,16 @@ pub struct Srdo {
     overrun_pending: u64,
     cursor: u8,
     not_operational_reported: bool,
+    /// Transmit SRDOs: earliest first transmission after entering
+    /// OPERATIONAL (the same for every SRDO of the node).
+    tx_from: Ticks,
+    /// No armed SCT deadline of a running receive SRDO lies before this
+    /// instant, so the timer phase has nothing to do until it has passed
+    /// (without the program monitor; see [`Srdo::poll`]).
+    due: Ticks,
+    /// A first frame may be held (set when one is, cleared by a timer pass
+    /// that finds none).
+    holding_seen: bool,
 }
 
 impl Default for Srdo {
@@ -380,6 +401,9 @@ impl Srdo {
             overrun_pending: 0,
             cursor: 0,
             not_operational_reported: false,
+            tx_from: Ticks(0),
+            due: Ticks(0),
+            holding_seen: false,
         }
     }
 
@@ -593,11 +617,12 @@ impl Srdo {
                     }
                 }
             } else {
-                s.tx_from = tx_from;
                 s.deadline = tx_from.plus(s.sct);
             }
         }
+        self.tx_from = tx_from;
         self.running = true;
+        self.plan_timers(now);
     }
 
     #[cfg(not(srdo_static_mapping))]
@@ -617,24 +642,29 @@ impl Srdo {
     }
 
     #[cfg(not(srdo_static_mapping))]
-    fn gather(&self, slot: usize) -> Option<(u64, u64)> {
-        self.plans.get(slot)?.gather()
+    fn gather(&self, slot: usize, dlc: u8) -> Option<(u64, u64)> {
+        self.plans.get(slot)?.gather(dlc)
     }
 
     #[cfg(srdo_static_mapping)]
-    fn gather(&self, slot: usize) -> Option<(u64, u64)> {
+    fn gather(&self, slot: usize, dlc: u8) -> Option<(u64, u64)> {
+        let _ = dlc;
         self.fields.get(slot)?.as_ref()?.gather()
     }
 
     #[cfg(not(srdo_static_mapping))]
-    fn scatter(&self, slot: usize, normal: u64, inverted: u64) -> bool {
-        self.plans
-            .get(slot)
-            .is_some_and(|p| p.scatter(normal, inverted))
+    #[inline(always)]
+    fn scatter(&self, slot: usize, normal: u64, inverted: u64, dlc: u8) -> bool {
+        match self.plans.get(slot) {
+            Some(p) => p.scatter(normal, inverted, dlc),
+            None => false,
+        }
     }
 
     #[cfg(srdo_static_mapping)]
-    fn scatter(&self, slot: usize, normal: u64, inverted: u64) -> bool {
+    #[inline(always)]
+    fn scatter(&self, slot: usize, normal: u64, inverted: u64, dlc: u8) -> bool {
+        let _ = dlc;
         matches!(self.fields.get(slot), Some(Some(f)) if f.scatter(normal, inverted))
     }
 
@@ -652,6 +682,7 @@ impl Srdo {
         q.schedule(Internal::SrdoCheckHandled(slot as u8));
     }
 
+    #[inline(always)]
     fn report_ok(&mut self, slot: usize, pm: ProgMonEvent, q: &mut ActionQueue) {
         let Some(s) = self.slots.get_mut(slot) else {
             return;
@@ -723,6 +754,7 @@ impl Srdo {
     }
 
     /// Offers a received frame; `true` when it was an SRDO or GFC frame.
+    #[inline]
     pub fn on_frame(
         &mut self,
         od: &ObjectDictionary,
@@ -769,6 +801,7 @@ impl Srdo {
         }
     }
 
+    #[inline(always)]
     fn on_normal(&mut self, slot: usize, rx: &RxFrame, q: &mut ActionQueue) {
         let Some(s) = self.slots.get_mut(slot) else {
             return;
@@ -784,8 +817,9 @@ impl Srdo {
         } else {
             let twice = s.flags & flag::HOLDING != 0;
             s.flags |= flag::HOLDING;
-            s.held = wire::payload_u64(&rx.frame);
+            s.hold(wire::payload_u64(&rx.frame));
             s.held_at = t;
+            self.holding_seen |= !SRDO_USE_PROGMONITOR;
             twice.then_some(CopKernel::SrdoNotInOrder)
         };
         if late {
@@ -796,6 +830,7 @@ impl Srdo {
         }
     }
 
+    #[inline(always)]
     fn on_inverted(&mut self, slot: usize, rx: &RxFrame, q: &mut ActionQueue) {
         let Some(s) = self.slots.get_mut(slot) else {
             return;
@@ -810,17 +845,20 @@ impl Srdo {
             CopKernel::SrdoSrvtTimeout
         } else if rx.frame.len != s.dlc {
             CopKernel::SrdoDlcNotValid
-        } else if !wire::is_complement(s.held, inverted, s.dlc) {
+        } else if !wire::is_complement(s.held(), inverted, s.dlc) {
             CopKernel::SrdoDataError
         } else {
-            let (normal, first_at) = (s.held, s.held_at);
-            if !self.scatter(slot, normal, inverted) {
+            let (normal, first_at, dlc) = (s.held(), s.held_at, s.dlc);
+            if !self.scatter(slot, normal, inverted, dlc) {
                 self.report_error(slot, CopKernel::SrdoErrorMapp, q);
                 return;
             }
             if let Some(s) = self.slots.get_mut(slot) {
                 s.deadline = first_at.plus(s.sct);
                 s.flags |= flag::ARMED;
+                if !SRDO_USE_PROGMONITOR && self.due.is_after(s.deadline) {
+                    self.due = s.deadline;
+                }
             }
             self.report_ok(slot, ProgMonEvent::SrdoReceived, q);
             return;
@@ -870,16 +908,46 @@ impl Srdo {
             }
             return true;
         }
+        // Without the program monitor a pass only acts on a deadline that
+        // has passed or (SRVT checked before the second frame) on a held
+        // first frame; until then the whole pass is one comparison.
+        if !SRDO_USE_PROGMONITOR && self.cursor == 0 {
+            let watch_srvt = srvt_before_1st && self.holding_seen;
+            if !(watch_srvt || now.is_after(self.due)) {
+                return true;
+            }
+        }
         while self.cursor < self.count {
             let slot = usize::from(self.cursor);
             self.cursor += 1;
             let before = q.len();
             self.timer_step(slot, now, q, srvt_before_1st);
-            if q.len() != before {
-                return self.cursor >= self.count;
+            if q.len() != before && self.cursor < self.count {
+                return false;
             }
         }
+        if !SRDO_USE_PROGMONITOR {
+            self.plan_timers(now);
+        }
         true
+    }
+
+    /// Finds the earliest armed SCT deadline of the running receive SRDOs
+    /// ([`Srdo::due`]; `now` + 2^30 ticks when none is armed, which only
+    /// causes an idle pass after 1.2 days) and whether a first frame is
+    /// held.
+    fn plan_timers(&mut self, now: Ticks) {
+        let mut earliest = 1i32 << 30;
+        let mut holding = false;
+        for s in self.slots.iter().take(self.count()) {
+            holding |= s.flags & flag::HOLDING != 0;
+            let armed = flag::ACTIVE | flag::ARMED;
+            if s.flags & armed == armed && s.direction == Direction::Receive as u8 {
+                earliest = earliest.min(s.deadline.since(now) as i32);
+            }
+        }
+        self.due = now.plus(earliest as u32);
+        self.holding_seen = holding;
     }
 
     fn timer_step(&mut self, slot: usize, now: Ticks, q: &mut ActionQueue, srvt_before_1st: bool) {
@@ -973,10 +1041,10 @@ impl Srdo {
         if s.direction != Direction::Transmit as u8 {
             return Err(CopKernel::SrdoRxTxConflict);
         }
-        if !(now == s.tx_from || now.is_after(s.tx_from)) {
+        if !(now == self.tx_from || now.is_after(self.tx_from)) {
             return Err(CopKernel::SrdoNmtError);
         }
-        let Some((normal, inverted)) = self.gather(slot) else {
+        let Some((normal, inverted)) = self.gather(slot, s.dlc) else {
             self.report_error(slot, CopKernel::SrdoErrorMapp, q);
             return Err(CopKernel::SrdoErrorMapp);
         };

@@ -29,10 +29,107 @@ use super::{MAPP_OFFSET, MappingEntry, read_u8, read_u32};
 #[cfg(not(srdo_static_mapping))]
 const META_SIGNED: u8 = 0x80;
 
+/// Where the frame bytes of a [`Plan::Bytes`] beyond the mapped length go
+/// (and come from; they are masked off). Nothing reads it.
+#[cfg(not(srdo_static_mapping))]
+static SINK: AtomicU8 = AtomicU8::new(0);
+
 /// The copy plan of one SRDO with dynamic mapping.
 #[cfg(not(srdo_static_mapping))]
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Plan {
+pub(crate) enum Plan {
+    /// Every entry is a RAM variable of exactly its mapped length and no
+    /// two entries share a byte: each frame byte has one variable byte,
+    /// resolved when the plan was built. `normal[k]` / `inverted[k]` is the
+    /// variable byte of byte k of frame 1 / frame 2 ([`SINK`] beyond the
+    /// mapped length). Writing byte by byte in this order leaves the
+    /// variables exactly as [`General::scatter`] does.
+    Bytes {
+        normal: [&'static AtomicU8; 8],
+        inverted: [&'static AtomicU8; 8],
+    },
+    /// Anything else (variables attached by the application, variables
+    /// wider than their mapped type, dummy entries, shared bytes).
+    General(General),
+}
+
+#[cfg(not(srdo_static_mapping))]
+impl Plan {
+    /// An empty plan.
+    pub(crate) const EMPTY: Plan = Plan::General(General::EMPTY);
+
+    /// Builds the plan of an SRDO whose configuration passed the check.
+    /// `None` when an object cannot be resolved (then the SRDO does not run).
+    pub(crate) fn build(od: &ObjectDictionary, commu_index: u16) -> Option<Plan> {
+        let general = General::build(od, commu_index)?;
+        Some(general.bytes().unwrap_or(Plan::General(general)))
+    }
+
+    /// Reads the normal and the inverted data from the mapped variables
+    /// (frame layout, little-endian). `None` when a variable is missing.
+    #[inline]
+    pub(crate) fn gather(&self, dlc: u8) -> Option<(u64, u64)> {
+        match self {
+            Plan::Bytes { normal, inverted } => {
+                let mask = payload_mask(dlc);
+                Some((load_frame(normal) & mask, load_frame(inverted) & mask))
+            }
+            Plan::General(g) => g.gather(),
+        }
+    }
+
+    /// Writes received normal and inverted data to the mapped variables.
+    /// Either every variable is written or, when one is missing, none.
+    #[inline(always)]
+    pub(crate) fn scatter(&self, normal: u64, inverted: u64, dlc: u8) -> bool {
+        match self {
+            Plan::Bytes {
+                normal: n,
+                inverted: i,
+            } => {
+                store_frame(n, normal, dlc);
+                store_frame(i, inverted, dlc);
+                true
+            }
+            Plan::General(g) => g.scatter(normal, inverted),
+        }
+    }
+}
+
+/// The eight frame bytes from their variable bytes (little-endian).
+#[cfg(not(srdo_static_mapping))]
+fn load_frame(bytes: &[&'static AtomicU8; 8]) -> u64 {
+    let mut b = [0u8; 8];
+    for (d, s) in b.iter_mut().zip(bytes) {
+        *d = s.load(Ordering::Relaxed);
+    }
+    u64::from_le_bytes(b)
+}
+
+/// The eight frame bytes into their variable bytes.
+#[cfg(not(srdo_static_mapping))]
+#[inline(always)]
+fn store_frame(bytes: &[&'static AtomicU8; 8], v: u64, dlc: u8) {
+    let [b0, b1, b2, b3, b4, b5, b6, b7] = bytes;
+    let [v0, v1, v2, v3, v4, v5, v6, v7] = v.to_le_bytes();
+    // Bytes 4..8 only when they are mapped (else they all go to SINK).
+    if dlc > 4 {
+        b4.store(v4, Ordering::Relaxed);
+        b5.store(v5, Ordering::Relaxed);
+        b6.store(v6, Ordering::Relaxed);
+        b7.store(v7, Ordering::Relaxed);
+    }
+    b0.store(v0, Ordering::Relaxed);
+    b1.store(v1, Ordering::Relaxed);
+    b2.store(v2, Ordering::Relaxed);
+    b3.store(v3, Ordering::Relaxed);
+}
+
+/// The general copy plan: the subindex of each entry, resolved to its
+/// variable on every transfer.
+#[cfg(not(srdo_static_mapping))]
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct General {
     /// Subindex description of each entry in mapping order (normal,
     /// inverted, normal, ...); `None` for a dummy entry.
     desc: [Option<&'static ObdSubEntry>; SRDO_MAX_MAPPENTRIES],
@@ -42,29 +139,24 @@ pub(crate) struct Plan {
     meta: [u8; SRDO_MAX_MAPPENTRIES],
     /// Number of entries.
     count: u8,
-    /// Every entry is a plain RAM variable (or a dummy), so resolving a
-    /// variable cannot fail and received data are written in one pass.
-    all_ram: bool,
 }
 
 #[cfg(not(srdo_static_mapping))]
-impl Plan {
+impl General {
     /// An empty plan.
-    pub(crate) const EMPTY: Plan = Plan {
+    const EMPTY: General = General {
         desc: [None; SRDO_MAX_MAPPENTRIES],
         element: [0; SRDO_MAX_MAPPENTRIES],
         meta: [0; SRDO_MAX_MAPPENTRIES],
         count: 0,
-        all_ram: true,
     };
 
-    /// Builds the plan of an SRDO whose configuration passed the check.
-    /// `None` when an object cannot be resolved (then the SRDO does not run).
-    pub(crate) fn build(od: &ObjectDictionary, commu_index: u16) -> Option<Plan> {
+    /// The general plan of an SRDO's mapping; `None` when an object cannot
+    /// be resolved.
+    pub(super) fn build(od: &ObjectDictionary, commu_index: u16) -> Option<General> {
         let mapp_index = commu_index + MAPP_OFFSET;
         let count = read_u8(od, mapp_index, 0)?;
-        let mut plan = Plan::EMPTY;
-        plan.all_ram = true;
+        let mut plan = General::EMPTY;
         for i in 0..usize::from(count) {
             let sub = u8::try_from(i + 1).ok()?;
             let entry = MappingEntry::decode(read_u32(od, mapp_index, sub)?);
@@ -76,9 +168,6 @@ impl Plan {
                 let element = obj.sub().checked_sub(obj.desc().sub())?;
                 (Some(obj.desc()), element, obj.data_type().is_signed())
             };
-            if let Some(d) = desc {
-                plan.all_ram &= matches!(d.storage(usize::from(element)), Some(Storage::Ram(_)));
-            }
             *plan.desc.get_mut(i)? = desc;
             *plan.element.get_mut(i)? = element;
             *plan.meta.get_mut(i)? = (wire & 0x0F) | if signed { META_SIGNED } else { 0 };
@@ -109,9 +198,45 @@ impl Plan {
         Some(vars)
     }
 
+    /// The byte plan of this mapping, when every entry is a RAM variable
+    /// of exactly its mapped length, no byte is mapped twice and the data
+    /// fit one frame.
+    fn bytes(&self) -> Option<Plan> {
+        let sink: &'static AtomicU8 = &SINK;
+        let mut frames = [[sink; 8]; 2];
+        let mut offset = 0usize;
+        for i in 0..usize::from(self.count) {
+            let wire = usize::from(*self.meta.get(i)? & 0x0F);
+            let element = usize::from(*self.element.get(i)?);
+            // Dummy entries and attached variables are not bytes of RAM.
+            let var = (*self.desc.get(i)?)?.ram_var(element)?;
+            if var.len() != wire {
+                return None;
+            }
+            for k in 0..wire {
+                let pos = if cfg!(target_endian = "little") {
+                    k
+                } else {
+                    wire - 1 - k
+                };
+                let byte = var.get(pos)?;
+                // A byte written by two entries would depend on their order.
+                if frames.iter().flatten().any(|b| core::ptr::eq(*b, byte)) {
+                    return None;
+                }
+                *frames.get_mut(i % 2)?.get_mut(offset + k)? = byte;
+            }
+            if i % 2 == 1 {
+                offset += wire;
+            }
+        }
+        let [normal, inverted] = frames;
+        Some(Plan::Bytes { normal, inverted })
+    }
+
     /// Reads the normal and the inverted data from the mapped variables
     /// (frame layout, little-endian). `None` when a variable is missing.
-    pub(crate) fn gather(&self) -> Option<(u64, u64)> {
+    pub(super) fn gather(&self) -> Option<(u64, u64)> {
         let vars = self.resolve()?;
         let mut data = [0u64; 2];
         let mut offset = 0u32;
@@ -136,10 +261,8 @@ impl Plan {
 
     /// Writes received normal and inverted data to the mapped variables.
     /// Either every variable is written or, when one is missing, none.
-    pub(crate) fn scatter(&self, normal: u64, inverted: u64) -> bool {
-        if self.all_ram {
-            return self.scatter_ram(normal, inverted);
-        }
+    #[inline(never)]
+    pub(super) fn scatter(&self, normal: u64, inverted: u64) -> bool {
         let Some(vars) = self.resolve() else {
             return false;
         };
@@ -158,40 +281,6 @@ impl Plan {
                     value = crate::od::value::sign_extend(value, usize::from(wire));
                 }
                 store_native(m, value);
-            }
-            if i % 2 == 1 {
-                offset += 8 * u32::from(wire);
-            }
-        }
-        true
-    }
-}
-
-#[cfg(not(srdo_static_mapping))]
-impl Plan {
-    /// [`Plan::scatter`] for plans of RAM variables only: one pass, the
-    /// variables are resolved while writing (they cannot be missing).
-    #[inline]
-    fn scatter_ram(&self, normal: u64, inverted: u64) -> bool {
-        let data = [normal, inverted];
-        let mut offset = 0u32;
-        for (i, ((desc, element), meta)) in self
-            .desc
-            .iter()
-            .zip(&self.element)
-            .zip(&self.meta)
-            .take(usize::from(self.count))
-            .enumerate()
-        {
-            let wire = *meta & 0x0F;
-            if let (Some(d), Some(v)) = (desc, data.get(i % 2)) {
-                if let Some(Storage::Ram(m)) = d.storage(usize::from(*element)) {
-                    let mut value = v.checked_shr(offset).unwrap_or(0) & payload_mask(wire);
-                    if *meta & META_SIGNED != 0 {
-                        value = crate::od::value::sign_extend(value, usize::from(wire));
-                    }
-                    store_native(m, value);
-                }
             }
             if i % 2 == 1 {
                 offset += 8 * u32::from(wire);

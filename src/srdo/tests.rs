@@ -595,6 +595,106 @@ mod dynamic {
         ));
     }
 
+    /// Every mapped variable of the test dictionary, byte by byte.
+    fn variables() -> Vec<u8> {
+        [
+            &NORMAL[..],
+            &INVERTED[..],
+            &RO_VAR[..],
+            &NOMAP_VAR[..],
+            &U32_VAR[..],
+            &U32_VAR_I[..],
+            &WIDE_N[..],
+            &WIDE_I[..],
+        ]
+        .iter()
+        .flat_map(|v| {
+            v.iter()
+                .map(|b| b.load(core::sync::atomic::Ordering::Relaxed))
+        })
+        .collect()
+    }
+
+    fn clear_variables() {
+        for v in [
+            &NORMAL[..],
+            &INVERTED[..],
+            &RO_VAR[..],
+            &NOMAP_VAR[..],
+            &U32_VAR[..],
+            &U32_VAR_I[..],
+            &WIDE_N[..],
+            &WIDE_I[..],
+        ] {
+            for b in v {
+                b.store(0, core::sync::atomic::Ordering::Relaxed);
+            }
+        }
+    }
+
+    #[test]
+    fn byte_plan_moves_data_as_the_general_plan() {
+        let (_g, od, _srdo) = setup();
+        // (mapping, byte plan expected)
+        let cases: [(&[u32], bool); 5] = [
+            (&[0x6201_0110, 0x6301_0110], true),
+            (
+                &[
+                    0x6201_0110,
+                    0x6301_0110,
+                    0x6200_0108,
+                    0x6300_0108,
+                    0x6200_0208,
+                    0x6300_0208,
+                ],
+                true,
+            ),
+            (
+                &[
+                    0x6400_0320,
+                    0x6400_0420,
+                    0x6201_0210,
+                    0x6301_0210,
+                    0x6200_0408,
+                    0x6300_0408,
+                    0x6200_0308,
+                    0x6300_0308,
+                ],
+                true,
+            ),
+            // INTEGER24 in a 4-byte variable: sign extension.
+            (&[0x6500_0118, 0x6500_0218], false),
+            // One variable as normal and inverted entry: the order counts.
+            (&[0x6200_0108, 0x6200_0108, 0x6201_0110, 0x6301_0110], false),
+        ];
+        let data = [
+            (0x8877_6655_4433_2211u64, 0x0123_4567_89AB_CDEFu64),
+            (0x0000_0000_00F1_80FF, 0xFFFF_FFFF_FF0E_7F00),
+        ];
+        for (mapping, bytes) in cases {
+            set(&od, 0x1381, 0, mapping.len() as u64);
+            for (sub, e) in (1u8..).zip(mapping) {
+                set(&od, 0x1381, sub, u64::from(*e));
+            }
+            let dlc = check::mapped_len(&od, 0x1301).unwrap();
+            let p = plan::Plan::build(&od, 0x1301).unwrap();
+            let g = plan::General::build(&od, 0x1301).unwrap();
+            assert_eq!(matches!(p, plan::Plan::Bytes { .. }), bytes, "{mapping:x?}");
+            for (n, i) in data {
+                let mask = crate::wire::srdo::payload_mask(dlc);
+                clear_variables();
+                assert!(g.scatter(n & mask, i & mask));
+                let want = variables();
+                assert_eq!(p.gather(dlc), g.gather(), "{mapping:x?}");
+                clear_variables();
+                assert!(p.scatter(n & mask, i & mask, dlc));
+                assert_eq!(variables(), want, "{mapping:x?} {n:x} {i:x}");
+                assert_eq!(p.gather(dlc), g.gather(), "{mapping:x?}");
+                assert_ne!(want, vec![0; want.len()], "something was written");
+            }
+        }
+    }
+
     #[test]
     fn errors_leave_variables_untouched_and_set_status() {
         let (_g, od, mut srdo) = setup();
@@ -711,6 +811,58 @@ mod dynamic {
             if done {
                 return out;
             }
+        }
+    }
+
+    #[test]
+    fn sct_timeouts_of_several_srdos_at_their_own_ticks() {
+        for switch in [false, true] {
+            let (_g, od, mut srdo) = setup();
+            // SRDO 2: receive, SCT 100 ms, COB-IDs 0x103/0x104, 2 bytes.
+            set(&od, 0x1302, 1, 2);
+            set(&od, 0x1302, 2, 100);
+            set(&od, 0x1382, 0, 2);
+            set(&od, 0x1382, 1, 0x6201_0210);
+            set(&od, 0x1382, 2, 0x6301_0210);
+            receive_config(&od, &srdo);
+            operational(&od, &mut srdo, 1000);
+            // Deadlines: SRDO 1 at 1250 (25 ms), SRDO 2 at 2000; the pair of
+            // SRDO 2 at 1200 moves its deadline to 2200, the pair of SRDO 1
+            // at 1300 after its timeout sets a deadline (1550) before every
+            // other one.
+            let frames: [(u32, u16, [u8; 2]); 4] = [
+                (1200, 0x103, [1, 0]),
+                (1200, 0x104, [0xFE, 0xFF]),
+                (1300, 0x101, [2, 0]),
+                (1301, 0x102, [0xFD, 0xFF]),
+            ];
+            let mut errors = Vec::new();
+            for t in 1001..=2400u32 {
+                for (_, id, data) in frames.iter().filter(|f| f.0 == t) {
+                    let mut q = ActionQueue::new();
+                    srdo.on_frame(&od, NmtState::Operational, &rx(*id, data, t), &mut q);
+                    let ev = run(&mut srdo, &mut q, manual_app);
+                    assert!(
+                        matches!(ev.first(), None | Some(Event::SrdoEvent(_))),
+                        "{ev:?}"
+                    );
+                }
+                for e in timers(&mut srdo, t, switch) {
+                    if let Event::SrdoError(idx, code) = e {
+                        errors.push((t, idx, code));
+                    }
+                }
+            }
+            let sct = CopKernel::SrdoSctTimeout;
+            assert_eq!(
+                errors,
+                [
+                    (1251, 0x1301, sct),
+                    (1551, 0x1301, sct),
+                    (2201, 0x1302, sct)
+                ],
+                "SRVT switch {switch}"
+            );
         }
     }
 
