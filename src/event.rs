@@ -152,7 +152,9 @@ pub const QUEUE_CAPACITY: usize = 16;
 /// A fixed-capacity double-ended queue of actions.
 #[derive(Clone, Debug)]
 pub struct ActionQueue {
-    buf: [Option<Action>; QUEUE_CAPACITY],
+    /// The ring; only the `len` entries from `head` count (the others hold
+    /// whatever was there).
+    buf: [Action; QUEUE_CAPACITY],
     head: usize,
     len: usize,
 }
@@ -167,7 +169,7 @@ impl ActionQueue {
     /// An empty queue.
     pub const fn new() -> Self {
         ActionQueue {
-            buf: [None; QUEUE_CAPACITY],
+            buf: [Action::Do(Internal::Reconfigure); QUEUE_CAPACITY],
             head: 0,
             len: 0,
         }
@@ -192,7 +194,7 @@ impl ActionQueue {
         }
         let slot = (self.head + self.len) % QUEUE_CAPACITY;
         if let Some(s) = self.buf.get_mut(slot) {
-            *s = Some(a);
+            *s = a;
         }
         self.len += 1;
         true
@@ -215,7 +217,7 @@ impl ActionQueue {
         }
         self.head = (self.head + QUEUE_CAPACITY - 1) % QUEUE_CAPACITY;
         if let Some(s) = self.buf.get_mut(self.head) {
-            *s = Some(a);
+            *s = a;
         }
         self.len += 1;
         true
@@ -228,7 +230,7 @@ impl ActionQueue {
         if self.len == 0 {
             return None;
         }
-        let a = self.buf.get(self.head).copied().flatten();
+        let a = self.buf.get(self.head % QUEUE_CAPACITY).copied();
         self.head = (self.head + 1) % QUEUE_CAPACITY;
         self.len -= 1;
         a
@@ -241,7 +243,7 @@ impl ActionQueue {
         if self.len == 0 {
             return None;
         }
-        let Some(Some(Action::Emit(e))) = self.buf.get(self.head).copied() else {
+        let Some(Action::Emit(e)) = self.buf.get(self.head % QUEUE_CAPACITY).copied() else {
             return None;
         };
         self.head = (self.head + 1) % QUEUE_CAPACITY;

@@ -97,7 +97,7 @@ use crate::error::{CopKernel, CopResult};
 use crate::event::{Action, ActionQueue, Event, Internal, NmtState, ProgMonEvent};
 use crate::od::ObjectDictionary;
 use crate::port::{CanPort, Priority, RxFrame, Ticks, ms_to_ticks};
-use crate::wire::srdo::{self as wire, COB_ID_COUNT, COB_ID_MIN, Half, SrdoCobIds};
+use crate::wire::srdo::{self as wire, COB_ID_COUNT, COB_ID_MIN, SrdoCobIds};
 
 pub use crc::crc16;
 
@@ -248,9 +248,10 @@ mod flag {
 /// The run-time state of one SRDO (at most 64 bytes, a test checks).
 #[derive(Clone, Copy, Debug)]
 struct Slot {
-    /// Normal data of the held first frame (little-endian, low and high
-    /// 32 bits, so that the slot needs no 8-byte alignment).
-    held: [u32; 2],
+    /// The data bytes of the held first frame as received (the bytes
+    /// beyond the DLC are masked off where the data are used; a byte
+    /// array, so that the slot needs no 8-byte alignment).
+    held: [u8; 8],
     /// Receive time of the held first frame.
     held_at: Ticks,
     /// Receive: SCT deadline; transmit: refresh deadline.
@@ -281,7 +282,7 @@ const _: () = assert!(core::mem::size_of::<Slot>() <= 64);
 
 impl Slot {
     const EMPTY: Slot = Slot {
-        held: [0; 2],
+        held: [0; 8],
         held_at: Ticks(0),
         deadline: Ticks(0),
         sct: 0,
@@ -297,19 +298,6 @@ impl Slot {
 
     fn commu_index(&self) -> u16 {
         COMMU_BASE + u16::from(self.number)
-    }
-
-    /// The held first frame's data.
-    #[inline(always)]
-    fn held(&self) -> u64 {
-        let [lo, hi] = self.held;
-        u64::from(lo) | u64::from(hi) << 32
-    }
-
-    /// Holds a first frame's data.
-    #[inline(always)]
-    fn hold(&mut self, data: u64) {
-        self.held = [data as u32, (data >> 32) as u32];
     }
 }
 
@@ -496,15 +484,16 @@ impl Srdo {
         self.gfc_ignored
     }
 
+    #[inline]
     fn slot_for(&self, commu_index: u16) -> Result<usize, CopKernel> {
-        if !(COMMU_FIRST..=COMMU_LAST).contains(&commu_index) {
-            return Err(CopKernel::SrdoNotExist);
+        // Below 0x1301 the difference wraps far beyond the table.
+        match self
+            .slot_of_commu
+            .get(usize::from(commu_index.wrapping_sub(COMMU_FIRST)))
+        {
+            Some(&s) if s != 0 => Ok(usize::from(s - 1)),
+            _ => Err(CopKernel::SrdoNotExist),
         }
-        self.slot_of_commu
-            .get(usize::from(commu_index - COMMU_FIRST))
-            .and_then(|s| s.checked_sub(1))
-            .map(usize::from)
-            .ok_or(CopKernel::SrdoNotExist)
     }
 
     fn load_cached(&mut self, od: &ObjectDictionary) {
@@ -764,32 +753,34 @@ impl Srdo {
     ) -> bool {
         let _ = od;
         let f = &frame.frame;
+        // An id in 0x101..=0x180 is an 11-bit id (an extended id has its
+        // flag bit in the raw value); the table holds only the COB-IDs of
+        // running receive SRDOs (none while the SRDOs are stopped).
+        let raw = f.id.raw();
+        if let Some(&entry) = self
+            .slot_of_cob
+            .get(raw.wrapping_sub(u32::from(COB_ID_MIN)) as usize)
+        {
+            let Some(slot) = entry.checked_sub(1) else {
+                return false;
+            };
+            if f.rtr {
+                return true;
+            }
+            // Odd ids carry the normal data (COB-ID 1), even ids the
+            // inverted data.
+            if raw & 1 == 1 {
+                self.on_normal(usize::from(slot), frame, q);
+            } else {
+                self.on_inverted(usize::from(slot), frame, q);
+            }
+            return true;
+        }
         if crate::config::SRDO_USE_GFC && wire::is_gfc_id(f) {
             self.on_gfc(f, state, q);
             return true;
         }
-        if !self.running {
-            return false;
-        }
-        let Some((pos, half)) = wire::classify(f.id) else {
-            return false;
-        };
-        let Some(slot) = self
-            .slot_of_cob
-            .get(pos)
-            .and_then(|s| s.checked_sub(1))
-            .map(usize::from)
-        else {
-            return false;
-        };
-        if f.rtr {
-            return true;
-        }
-        match half {
-            Half::Normal => self.on_normal(slot, frame, q),
-            Half::Inverted => self.on_inverted(slot, frame, q),
-        }
-        true
+        false
     }
 
     fn on_gfc(&mut self, f: &crate::port::CanFrame, state: NmtState, q: &mut ActionQueue) {
@@ -817,7 +808,7 @@ impl Srdo {
         } else {
             let twice = s.flags & flag::HOLDING != 0;
             s.flags |= flag::HOLDING;
-            s.hold(wire::payload_u64(&rx.frame));
+            s.held = rx.frame.data;
             s.held_at = t;
             self.holding_seen |= !SRDO_USE_PROGMONITOR;
             twice.then_some(CopKernel::SrdoNotInOrder)
@@ -840,15 +831,18 @@ impl Srdo {
             return;
         }
         s.flags &= !flag::HOLDING;
-        let inverted = wire::payload_u64(&rx.frame);
+        let mask = wire::payload_mask(s.dlc);
+        let inverted = u64::from_le_bytes(rx.frame.data) & mask;
         let code = if rx.time.since(s.held_at) > u32::from(s.srvt) {
             CopKernel::SrdoSrvtTimeout
         } else if rx.frame.len != s.dlc {
             CopKernel::SrdoDlcNotValid
-        } else if !wire::is_complement(s.held(), inverted, s.dlc) {
+        } else if (u64::from_le_bytes(s.held) ^ inverted) & mask != mask {
+            // Not the complement of the held frame in every bit of the DLC.
             CopKernel::SrdoDataError
         } else {
-            let (normal, first_at, dlc) = (s.held(), s.held_at, s.dlc);
+            let normal = u64::from_le_bytes(s.held) & mask;
+            let (first_at, dlc) = (s.held_at, s.dlc);
             if !self.scatter(slot, normal, inverted, dlc) {
                 self.report_error(slot, CopKernel::SrdoErrorMapp, q);
                 return;
@@ -922,8 +916,12 @@ impl Srdo {
             self.cursor += 1;
             let before = q.len();
             self.timer_step(slot, now, q, srvt_before_1st);
-            if q.len() != before && self.cursor < self.count {
-                return false;
+            if q.len() != before {
+                let done = self.cursor >= self.count;
+                if done && !SRDO_USE_PROGMONITOR {
+                    self.plan_timers(now);
+                }
+                return done;
             }
         }
         if !SRDO_USE_PROGMONITOR {
