@@ -460,6 +460,9 @@ impl Stack {
                     // Frame after frame while they queue nothing.
                     while let Some(f) = port.receive() {
                         self.on_frame(port, &f, now);
+                        if let Some(e) = self.queue.pop_event() {
+                            return Some(e);
+                        }
                         if !self.queue.is_empty() {
                             break;
                         }
