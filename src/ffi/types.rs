@@ -433,15 +433,15 @@ pub struct tVarParam {
 }
 
 /// `kVarValid*` flags.
-pub mod var_valid {
+pub(crate) mod var_valid {
     /// kVarValidSize.
-    pub const SIZE: u8 = 0x01;
+    pub(crate) const SIZE: u8 = 0x01;
     /// kVarValidData.
-    pub const DATA: u8 = 0x02;
+    pub(crate) const DATA: u8 = 0x02;
     /// kVarValidCallback.
-    pub const CALLBACK: u8 = 0x04;
+    pub(crate) const CALLBACK: u8 = 0x04;
     /// kVarValidArg.
-    pub const ARG: u8 = 0x08;
+    pub(crate) const ARG: u8 = 0x08;
 }
 
 /// `tEmcParam`.
