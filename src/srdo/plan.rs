@@ -19,7 +19,7 @@ use core::sync::atomic::{AtomicU8, Ordering};
 #[cfg(not(srdo_static_mapping))]
 use crate::config::SRDO_MAX_MAPPENTRIES;
 #[cfg(not(srdo_static_mapping))]
-use crate::od::{ObdSubEntry, ObjectDictionary, Storage};
+use crate::od::{Access, DataType, ObdSubEntry, ObjectDictionary, Storage};
 use crate::wire::srdo::payload_mask;
 
 #[cfg(not(srdo_static_mapping))]
@@ -125,14 +125,26 @@ fn store_frame(bytes: &[&'static AtomicU8; 8], v: u64, dlc: u8) {
     b3.store(v3, Ordering::Relaxed);
 }
 
+/// The description a dummy entry (and an unused entry) of a [`General`]
+/// plan points to; nothing else does.
+#[cfg(not(srdo_static_mapping))]
+static NO_OBJECT: ObdSubEntry = ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[0]);
+
+/// True for [`NO_OBJECT`].
+#[cfg(not(srdo_static_mapping))]
+fn is_dummy(desc: &ObdSubEntry) -> bool {
+    core::ptr::eq(desc, &NO_OBJECT)
+}
+
 /// The general copy plan: the subindex of each entry, resolved to its
 /// variable on every transfer.
 #[cfg(not(srdo_static_mapping))]
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct General {
     /// Subindex description of each entry in mapping order (normal,
-    /// inverted, normal, ...); `None` for a dummy entry.
-    desc: [Option<&'static ObdSubEntry>; SRDO_MAX_MAPPENTRIES],
+    /// inverted, normal, ...); [`NO_OBJECT`] for a dummy entry (a reference
+    /// that is never null leaves [`Plan`] a spare value for its variant).
+    desc: [&'static ObdSubEntry; SRDO_MAX_MAPPENTRIES],
     /// Array element of each entry (0 for plain subindices).
     element: [u8; SRDO_MAX_MAPPENTRIES],
     /// Wire bytes (low nibble) and [`META_SIGNED`].
@@ -145,7 +157,7 @@ pub(crate) struct General {
 impl General {
     /// An empty plan.
     const EMPTY: General = General {
-        desc: [None; SRDO_MAX_MAPPENTRIES],
+        desc: [&NO_OBJECT; SRDO_MAX_MAPPENTRIES],
         element: [0; SRDO_MAX_MAPPENTRIES],
         meta: [0; SRDO_MAX_MAPPENTRIES],
         count: 0,
@@ -162,11 +174,11 @@ impl General {
             let entry = MappingEntry::decode(read_u32(od, mapp_index, sub)?);
             let wire = entry.bits / 8;
             let (desc, element, signed) = if entry.dummy_bits().is_some() {
-                (None, 0, false)
+                (&NO_OBJECT, 0, false)
             } else {
                 let obj = od.find(entry.index, entry.sub).ok()?;
                 let element = obj.sub().checked_sub(obj.desc().sub())?;
-                (Some(obj.desc()), element, obj.data_type().is_signed())
+                (obj.desc(), element, obj.data_type().is_signed())
             };
             *plan.desc.get_mut(i)? = desc;
             *plan.element.get_mut(i)? = element;
@@ -187,7 +199,8 @@ impl General {
             .zip(&self.element)
             .take(usize::from(self.count))
         {
-            if let Some(d) = desc {
+            if !is_dummy(desc) {
+                let d = *desc;
                 *v = Some(match d.storage(usize::from(*element))? {
                     Storage::Ram(m) => m,
                     Storage::Var(e) => e.data()?,
@@ -209,7 +222,11 @@ impl General {
             let wire = usize::from(*self.meta.get(i)? & 0x0F);
             let element = usize::from(*self.element.get(i)?);
             // Dummy entries and attached variables are not bytes of RAM.
-            let var = (*self.desc.get(i)?)?.ram_var(element)?;
+            let desc = *self.desc.get(i)?;
+            if is_dummy(desc) {
+                return None;
+            }
+            let var = desc.ram_var(element)?;
             if var.len() != wire {
                 return None;
             }
