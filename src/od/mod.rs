@@ -1460,7 +1460,18 @@ mod tests {
             for e in od.entries() {
                 let entry = od.entry(e.index()).unwrap();
                 assert_eq!(entry.index(), e.index());
-                for sub in 0..=u8::MAX {
+                // Under Miri: the existing subindices, the two after them
+                // and 255 (the others are refused like those).
+                let last = e
+                    .subs()
+                    .iter()
+                    .map(|d| usize::from(d.sub()))
+                    .max()
+                    .unwrap_or(0)
+                    + 2;
+                let subs = (0..=u8::MAX)
+                    .filter(|&s| !cfg!(miri) || usize::from(s) <= last || s == u8::MAX);
+                for sub in subs {
                     let direct = od.find(e.index(), sub);
                     let via_entry = entry.find(sub);
                     assert_eq!(direct.is_ok(), via_entry.is_ok());
