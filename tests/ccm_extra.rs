@@ -11,16 +11,19 @@
 //! download); emergency codes CiA 301 table 21; 0x1003 / 0x1010 / 0x1011
 //! semantics CiA 301 7.5.2.4 / .13 / .14.
 
+mod common;
+
 use core::sync::atomic::AtomicU8;
 
+use common::Node;
 use cop::ccm::{NmtCommand, Stack};
 use cop::error::{CopKernel, OdError, SdoAbort};
 use cop::event::{ErrCtrlEvent, Event, NmtState};
-use cop::od::{Access, ByteOrder, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
+use cop::od::{Access, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
 use cop::pdo::PDO_MAX_MAPPENTRIES;
 use cop::pdo::decl::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
-use cop::port::{CanFrame, CanId, Ticks};
-use cop::sim::{SimBus, SimPort};
+use cop::port::{CanFrame, CanId};
+use cop::sim::SimBus;
 use cop::store::{self, part};
 use cop::wire::emcy::{self, Emergency};
 use cop::wire::time::TimeOfDay;
@@ -180,61 +183,7 @@ static SERIAL: std::sync::Mutex<()> = std::sync::Mutex::new(());
 const ID_A: u8 = 2;
 const ID_B: u8 = 1;
 
-struct Node {
-    stack: Stack,
-    port: SimPort,
-    events: Vec<Event>,
-}
-
 impl Node {
-    fn new(bus: &SimBus, od: ObjectDictionary, id: u8) -> Node {
-        let mut n = Node {
-            stack: Stack::new(od, id).unwrap(),
-            port: bus.attach(64),
-            events: Vec::new(),
-        };
-        n.drain();
-        n.stack.connect().unwrap();
-        n.drain();
-        n
-    }
-
-    fn now(&self) -> Ticks {
-        self.port.bus().now()
-    }
-
-    fn drain(&mut self) {
-        let now = self.now();
-        while let Some(e) = self.stack.drain(&mut self.port, now) {
-            self.events.push(e);
-        }
-    }
-
-    fn cycle(&mut self) {
-        let now = self.now();
-        let mut ev = Vec::new();
-        self.stack.process(&mut self.port, now, |_, e| ev.push(e));
-        self.events.extend(ev);
-    }
-
-    fn command(&mut self, cmd: NmtCommand) {
-        self.stack.exec_command(cmd).unwrap();
-        self.drain();
-    }
-
-    fn write(&mut self, index: u16, sub: u8, v: u32, len: usize) -> Result<(), OdError> {
-        let now = self.now();
-        let r = self
-            .stack
-            .write_object(index, sub, ByteOrder::Wire, &v.to_le_bytes()[..len], now);
-        self.drain();
-        r
-    }
-
-    fn read(&self, index: u16, sub: u8) -> u64 {
-        self.stack.od().read_uint(index, sub).unwrap()
-    }
-
     fn send_emergency(&mut self, code: u16, register: u8) -> Emergency {
         let e = Emergency {
             code,
@@ -867,7 +816,7 @@ fn store_is_refused_and_load_restores_at_the_next_reset() {
     );
     assert_eq!(net.a.read(0x1010, 1), 0);
     assert_eq!(
-        net.a.write(0x1010, 1, store::SAVE_SIGNATURE, 4),
+        net.a.write(0x1010, 1, store::SAVE_SIGNATURE.into(), 4),
         Err(OdError::new(
             CopKernel::CcmStoreHwError,
             SdoAbort::CannotStore

@@ -6,19 +6,22 @@
 //! parameter rules follow CiA 301 §7.5.2.35–38; SYNC §7.2.5 and 0x1005–0x1007
 //! §7.5.2.5–7; emergency codes CiA 301 table 21.
 
+mod common;
+
 use core::sync::atomic::AtomicU8;
 
+use common::Node;
 use cop::ccm::{NmtCommand, Stack};
 use cop::error::{CopKernel, OdError};
 use cop::event::{Event, NmtEvent, NmtState};
-use cop::od::{Access, ByteOrder, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
+use cop::od::{Access, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
 use cop::pdo::decl::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
 use cop::pdo::{
     Direction, PDO_MAX_MAPPENTRIES, PDO_USE_BIT_MAPPING, PDO_USE_DUMMY_MAPPING, PdoParam,
     StaticPdoParam,
 };
 use cop::port::{CanFrame, CanId, Ticks};
-use cop::sim::{SimBus, SimPort};
+use cop::sim::SimBus;
 use cop::wire::pdo::encode_sync;
 
 const fn limits_i16(default: i16, low: i16, high: i16) -> [u8; 6] {
@@ -172,62 +175,7 @@ node_dictionary!(node_b);
 /// The dictionaries are statics shared by every test of this file.
 static SERIAL: std::sync::Mutex<()> = std::sync::Mutex::new(());
 
-struct Node {
-    stack: Stack,
-    port: SimPort,
-    events: Vec<Event>,
-}
-
 impl Node {
-    fn new(bus: &SimBus, od: ObjectDictionary, id: u8) -> Node {
-        let mut n = Node {
-            stack: Stack::new(od, id).unwrap(),
-            port: bus.attach(64),
-            events: Vec::new(),
-        };
-        n.drain();
-        n.stack.connect().unwrap();
-        n.drain();
-        n
-    }
-
-    fn now(&self) -> Ticks {
-        self.port.bus().now()
-    }
-
-    fn drain(&mut self) {
-        let now = self.now();
-        while let Some(e) = self.stack.drain(&mut self.port, now) {
-            self.events.push(e);
-        }
-    }
-
-    fn cycle(&mut self) {
-        let now = self.now();
-        let mut ev = Vec::new();
-        self.stack.process(&mut self.port, now, |_, e| ev.push(e));
-        self.events.extend(ev);
-    }
-
-    fn command(&mut self, cmd: NmtCommand) {
-        self.stack.exec_command(cmd).unwrap();
-        self.drain();
-    }
-
-    fn write(&mut self, index: u16, sub: u8, v: u64, len: usize) -> Result<(), OdError> {
-        let now = self.now();
-        let bytes = v.to_le_bytes();
-        let r = self
-            .stack
-            .write_object(index, sub, ByteOrder::Wire, &bytes[..len], now);
-        self.drain();
-        r
-    }
-
-    fn read(&self, index: u16, sub: u8) -> u64 {
-        self.stack.od().read_uint(index, sub).unwrap()
-    }
-
     fn define(&mut self, p: &PdoParam<'_>) -> Result<(), CopKernel> {
         let now = self.now();
         let r = self.stack.define_pdo(p, now);
