@@ -5,19 +5,20 @@
 //! refused transfers. The C view (`CcmSdocStartTransfer` with
 //! kSdocTypeBlockDown / kSdocTypeBlockUp) is c_tests/test_master_api.c.
 
+mod common;
+
 use core::sync::atomic::AtomicU8;
 use std::cell::Cell;
 use std::rc::Rc;
 use std::sync::{Mutex, MutexGuard};
 
-use cop::ccm::Stack;
+use common::SdoNet as Net;
 use cop::config::{SDO_BLOCKSIZE_DOWNLOAD, SDO_BLOCKSIZE_UPLOAD, SDOS_BUFFER_SIZE};
-use cop::event::Event;
-use cop::od::{Access, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
+use cop::od::{Access, DataType, ObdEntry, ObdSubEntry, decl};
 use cop::port::CanFrame;
-use cop::sdo::client::{ClientParam, Direction, SdocState};
-use cop::sim::{Delivery, SimBus, SimPort};
-use cop::wire::sdo::{Multiplexer, block_crc};
+use cop::sdo::client::{Direction, SdocState};
+use cop::sim::{Delivery, SimBus};
+use cop::wire::sdo::block_crc;
 
 static SERIAL: Mutex<()> = Mutex::new(());
 fn serial() -> MutexGuard<'static, ()> {
@@ -55,62 +56,9 @@ fn pattern(len: usize, seed: u8) -> Vec<u8> {
         .collect()
 }
 
-fn node(bus: &SimBus, od: ObjectDictionary, id: u8) -> (SimPort, Stack) {
-    let mut port = bus.attach(256);
-    let mut s = Stack::new(od, id).unwrap();
-    while s.drain(&mut port, bus.now()).is_some() {}
-    s.connect().unwrap();
-    while s.drain(&mut port, bus.now()).is_some() {}
-    (port, s)
-}
-
-struct Net {
-    bus: SimBus,
-    master: (SimPort, Stack),
-    server: (SimPort, Stack),
-    finished: Vec<Event>,
-}
-
 impl Net {
     fn new() -> Net {
-        let bus = SimBus::new();
-        let server = node(
-            &bus,
-            ObjectDictionary::new(&[], &SERVER_MAN, &[]).unwrap(),
-            2,
-        );
-        let mut master = node(&bus, ObjectDictionary::empty(), 1);
-        let p = ClientParam {
-            tx_cob: 0x602,
-            rx_cob: 0x582,
-            server_node: 2,
-            timeout_ticks: 0,
-        };
-        master
-            .1
-            .define_sdo_client(&mut master.0, 0x1280, p)
-            .unwrap();
-        bus.clear_trace();
-        Net {
-            bus,
-            master,
-            server,
-            finished: Vec::new(),
-        }
-    }
-
-    fn run(&mut self, cycles: usize) {
-        for _ in 0..cycles {
-            let now = self.bus.now();
-            self.server.1.process(&mut self.server.0, now, |_, _| {});
-            let fin = &mut self.finished;
-            self.master.1.process(&mut self.master.0, now, |_, e| {
-                if matches!(e, Event::SdocFinished { .. }) {
-                    fin.push(e);
-                }
-            });
-            self.bus.advance_ms(1);
-        }
+        Net::on_bus(&SERVER_MAN, 256)
     }
 
     /// Runs until the transfer ends (at most `limit` cycles).
@@ -121,31 +69,6 @@ impl Net {
             }
             self.run(1);
         }
-    }
-
-    fn start(
-        &mut self,
-        dir: Direction,
-        index: u16,
-        buf: &'static [AtomicU8],
-        len: usize,
-    ) -> cop::CopResult {
-        let now = self.bus.now();
-        let (port, stack) = &mut self.master;
-        stack.sdo_client_start(
-            port,
-            now,
-            0x1280,
-            dir,
-            Multiplexer::new(index, 0),
-            buf,
-            len,
-            0,
-        )
-    }
-
-    fn state(&self) -> (SdocState, u32) {
-        self.master.1.sdoc().state(0x1280).unwrap()
     }
 
     fn transferred(&self) -> u32 {

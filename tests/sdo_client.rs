@@ -2,14 +2,15 @@
 //! expedited and segmented transfers both ways, aborts from the server,
 //! timeout, one transfer per server, buffer bounds (CiA 301 SDO protocols).
 
+mod common;
+
 use core::sync::atomic::AtomicU8;
 use std::sync::{Mutex, MutexGuard};
 
-use cop::ccm::Stack;
+use common::SdoNet as Net;
 use cop::event::{Event, NmtState};
-use cop::od::{Access, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
+use cop::od::{Access, DataType, ObdEntry, ObdSubEntry, decl};
 use cop::sdo::client::{ClientParam, Direction, SdocState};
-use cop::sim::{SimBus, SimPort};
 use cop::wire::sdo::Multiplexer;
 
 static SERIAL: Mutex<()> = Mutex::new(());
@@ -40,87 +41,9 @@ static TX_BUF: [AtomicU8; 40] = decl::zeroed();
 static RX_BUF: [AtomicU8; 40] = decl::zeroed();
 static SMALL_BUF: [AtomicU8; 8] = decl::zeroed();
 
-fn node(bus: &SimBus, od: ObjectDictionary, id: u8) -> (SimPort, Stack) {
-    let mut port = bus.attach(64);
-    let mut s = Stack::new(od, id).unwrap();
-    while s.drain(&mut port, bus.now()).is_some() {}
-    s.connect().unwrap();
-    while s.drain(&mut port, bus.now()).is_some() {}
-    (port, s)
-}
-
-struct Net {
-    bus: SimBus,
-    master: (SimPort, Stack),
-    server: (SimPort, Stack),
-    finished: Vec<Event>,
-}
-
 impl Net {
     fn new() -> Net {
-        let bus = SimBus::new();
-        let server = node(
-            &bus,
-            ObjectDictionary::new(&[], &SERVER_MAN, &[]).unwrap(),
-            2,
-        );
-        let mut master = node(&bus, ObjectDictionary::empty(), 1);
-        let p = ClientParam {
-            tx_cob: 0x602,
-            rx_cob: 0x582,
-            server_node: 2,
-            timeout_ticks: 0,
-        };
-        master
-            .1
-            .define_sdo_client(&mut master.0, 0x1280, p)
-            .unwrap();
-        bus.clear_trace();
-        Net {
-            bus,
-            master,
-            server,
-            finished: Vec::new(),
-        }
-    }
-
-    fn run(&mut self, cycles: usize) {
-        for _ in 0..cycles {
-            let now = self.bus.now();
-            self.server.1.process(&mut self.server.0, now, |_, _| {});
-            let fin = &mut self.finished;
-            self.master.1.process(&mut self.master.0, now, |_, e| {
-                if matches!(e, Event::SdocFinished { .. }) {
-                    fin.push(e);
-                }
-            });
-            self.bus.advance_ms(1);
-        }
-    }
-
-    fn start(
-        &mut self,
-        dir: Direction,
-        index: u16,
-        buf: &'static [AtomicU8],
-        len: usize,
-    ) -> cop::CopResult {
-        let now = self.bus.now();
-        let (port, stack) = &mut self.master;
-        stack.sdo_client_start(
-            port,
-            now,
-            0x1280,
-            dir,
-            Multiplexer::new(index, 0),
-            buf,
-            len,
-            0,
-        )
-    }
-
-    fn state(&self) -> (SdocState, u32) {
-        self.master.1.sdoc().state(0x1280).unwrap()
+        Net::on_bus(&SERVER_MAN, 64)
     }
 }
 

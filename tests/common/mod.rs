@@ -1,16 +1,21 @@
 //! Harness shared by the whole-stack test files: one node (stack, port on
-//! the simulated bus, the events it produced) driven cycle by cycle.
-//! Each file that uses it adds its own methods in an `impl Node` block.
+//! the simulated bus, the events it produced) driven cycle by cycle, and an
+//! SDO client with its server. Each file that uses them adds its own
+//! methods in an `impl` block of its own.
 
 // Not every file uses every method.
 #![allow(dead_code)]
 
+use core::sync::atomic::AtomicU8;
+
 use cop::ccm::{NmtCommand, Stack};
 use cop::error::OdError;
 use cop::event::Event;
-use cop::od::{ByteOrder, ObjectDictionary};
+use cop::od::{ByteOrder, ObdEntry, ObjectDictionary};
 use cop::port::Ticks;
+use cop::sdo::client::{ClientParam, Direction, SdocState};
 use cop::sim::{SimBus, SimPort};
+use cop::wire::sdo::Multiplexer;
 
 /// One node on the simulated bus.
 pub struct Node {
@@ -77,5 +82,99 @@ impl Node {
     /// A numeric object's value.
     pub fn read(&self, index: u16, sub: u8) -> u64 {
         self.stack.od().read_uint(index, sub).unwrap()
+    }
+}
+
+/// A stack on its own port of `bus` with a receive queue of `queue`
+/// frames, connected (PRE-OPERATIONAL); its start-up events are dropped.
+pub fn attach(bus: &SimBus, od: ObjectDictionary, id: u8, queue: usize) -> (SimPort, Stack) {
+    let mut port = bus.attach(queue);
+    let mut s = Stack::new(od, id).unwrap();
+    while s.drain(&mut port, bus.now()).is_some() {}
+    s.connect().unwrap();
+    while s.drain(&mut port, bus.now()).is_some() {}
+    (port, s)
+}
+
+/// An SDO client and its server on one bus: node 1 (empty dictionary)
+/// with client 0x1280 to node 2 (no timeout), node 2 with `server_part`
+/// as its manufacturer part; the trace starts empty.
+pub struct SdoNet {
+    pub bus: SimBus,
+    pub master: (SimPort, Stack),
+    pub server: (SimPort, Stack),
+    /// The client's `SdocFinished` events.
+    pub finished: Vec<Event>,
+}
+
+impl SdoNet {
+    pub fn on_bus(server_part: &'static [ObdEntry], queue: usize) -> SdoNet {
+        let bus = SimBus::new();
+        let server = attach(
+            &bus,
+            ObjectDictionary::new(&[], server_part, &[]).unwrap(),
+            2,
+            queue,
+        );
+        let mut master = attach(&bus, ObjectDictionary::empty(), 1, queue);
+        let p = ClientParam {
+            tx_cob: 0x602,
+            rx_cob: 0x582,
+            server_node: 2,
+            timeout_ticks: 0,
+        };
+        master
+            .1
+            .define_sdo_client(&mut master.0, 0x1280, p)
+            .unwrap();
+        bus.clear_trace();
+        SdoNet {
+            bus,
+            master,
+            server,
+            finished: Vec::new(),
+        }
+    }
+
+    /// `cycles` cycles of both nodes, 1 ms apart.
+    pub fn run(&mut self, cycles: usize) {
+        for _ in 0..cycles {
+            let now = self.bus.now();
+            self.server.1.process(&mut self.server.0, now, |_, _| {});
+            let fin = &mut self.finished;
+            self.master.1.process(&mut self.master.0, now, |_, e| {
+                if matches!(e, Event::SdocFinished { .. }) {
+                    fin.push(e);
+                }
+            });
+            self.bus.advance_ms(1);
+        }
+    }
+
+    /// `CcmSdocStartTransfer` on 0x1280 for `index` sub 0.
+    pub fn start(
+        &mut self,
+        dir: Direction,
+        index: u16,
+        buf: &'static [AtomicU8],
+        len: usize,
+    ) -> cop::CopResult {
+        let now = self.bus.now();
+        let (port, stack) = &mut self.master;
+        stack.sdo_client_start(
+            port,
+            now,
+            0x1280,
+            dir,
+            Multiplexer::new(index, 0),
+            buf,
+            len,
+            0,
+        )
+    }
+
+    /// The client's state and abort code.
+    pub fn state(&self) -> (SdocState, u32) {
+        self.master.1.sdoc().state(0x1280).unwrap()
     }
 }
