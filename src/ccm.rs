@@ -472,7 +472,7 @@ impl Stack {
                     }
                 }
                 Phase::SrdoTimers => {
-                    if self.srdo.poll(&self.od, self.state, now, &mut self.queue) {
+                    if self.srdo.poll(self.state, now, &mut self.queue) {
                         self.phase = Phase::SyncProducer;
                     }
                 }
@@ -561,10 +561,7 @@ impl Stack {
             if self.state == NmtState::Stopped {
                 return;
             }
-            if self
-                .srdo
-                .on_frame(&self.od, self.state, rx, &mut self.queue)
-            {
+            if self.srdo.on_frame(self.state, rx, &mut self.queue) {
                 return;
             }
             self.on_service_frame(port, rx, now);
@@ -927,14 +924,8 @@ impl Stack {
         commu_index: u16,
         now: Ticks,
     ) -> CopResult {
-        self.srdo.send(
-            &self.od,
-            port,
-            self.state,
-            commu_index,
-            now,
-            &mut self.queue,
-        )
+        self.srdo
+            .send(port, self.state, commu_index, now, &mut self.queue)
     }
 }
 

@@ -744,14 +744,7 @@ impl Srdo {
 
     /// Offers a received frame; `true` when it was an SRDO or GFC frame.
     #[inline]
-    pub fn on_frame(
-        &mut self,
-        od: &ObjectDictionary,
-        state: NmtState,
-        frame: &RxFrame,
-        q: &mut ActionQueue,
-    ) -> bool {
-        let _ = od;
+    pub fn on_frame(&mut self, state: NmtState, frame: &RxFrame, q: &mut ActionQueue) -> bool {
         let f = &frame.frame;
         // An id in 0x101..=0x180 is an 11-bit id (an extended id has its
         // flag bit in the raw value); the table holds only the COB-IDs of
@@ -872,14 +865,7 @@ impl Srdo {
     /// monitor). Resumable: each call handles SRDOs until one of them
     /// queued something (at most five actions), and returns `true` once
     /// every SRDO of this cycle has been handled.
-    pub fn poll(
-        &mut self,
-        od: &ObjectDictionary,
-        state: NmtState,
-        now: Ticks,
-        q: &mut ActionQueue,
-    ) -> bool {
-        let _ = od;
+    pub fn poll(&mut self, state: NmtState, now: Ticks, q: &mut ActionQueue) -> bool {
         self.poll_with(state, now, q, crate::config::SRDO_CHECK_SRVT_BEFORE_1STRX)
     }
 
@@ -1017,14 +1003,12 @@ impl Srdo {
     /// Success: status ok, `Event::SrdoEvent`, `ProgMon(SrdoTransmitted)`.
     pub fn send(
         &mut self,
-        od: &ObjectDictionary,
         port: &mut impl CanPort,
         state: NmtState,
         commu_index: u16,
         now: Ticks,
         q: &mut ActionQueue,
     ) -> CopResult {
-        let _ = od;
         let slot = self.slot_for(commu_index)?;
         if state != NmtState::Operational || !self.operational {
             return Err(CopKernel::SrdoNmtError);

@@ -566,14 +566,12 @@ mod dynamic {
         operational(&od, &mut srdo, 1000);
         let mut q = ActionQueue::new();
         assert!(srdo.on_frame(
-            &od,
             NmtState::Operational,
             &rx(0x101, &[0x34, 0x12], 1010),
             &mut q
         ));
         assert!(q.is_empty(), "the first frame alone reports nothing");
         assert!(srdo.on_frame(
-            &od,
             NmtState::Operational,
             &rx(0x102, &[0xCB, 0xED], 1011),
             &mut q
@@ -587,12 +585,7 @@ mod dynamic {
         assert_eq!(get(&od, 0x6301, 1), 0xEDCB);
         assert_eq!(srdo.get_state(0x1301), Ok(0x30), "set by the application");
         // A frame of another id is not the module's.
-        assert!(!srdo.on_frame(
-            &od,
-            NmtState::Operational,
-            &rx(0x103, &[1, 2], 1012),
-            &mut q
-        ));
+        assert!(!srdo.on_frame(NmtState::Operational, &rx(0x103, &[1, 2], 1012), &mut q));
     }
 
     /// Every mapped variable of the test dictionary, byte by byte.
@@ -729,7 +722,7 @@ mod dynamic {
             let mut q = ActionQueue::new();
             let mut events = Vec::new();
             for (id, data, t) in frames.iter() {
-                srdo.on_frame(&od, op, &rx(*id, data, *t), &mut q);
+                srdo.on_frame(op, &rx(*id, data, *t), &mut q);
                 assert!(q.len() <= 4 && q.len() < QUEUE_CAPACITY);
                 events.extend(run(&mut srdo, &mut q, |s, e| {
                     if let Event::SrdoError(idx, _) = e {
@@ -760,7 +753,7 @@ mod dynamic {
             let mut out = Vec::new();
             for (id, data, t) in frames {
                 let mut q = ActionQueue::new();
-                srdo.on_frame(&od, NmtState::Operational, &rx(*id, data, *t), &mut q);
+                srdo.on_frame(NmtState::Operational, &rx(*id, data, *t), &mut q);
                 out.extend(run(srdo, &mut q, manual_app));
             }
             out
@@ -840,7 +833,7 @@ mod dynamic {
             for t in 1001..=2400u32 {
                 for (_, id, data) in frames.iter().filter(|f| f.0 == t) {
                     let mut q = ActionQueue::new();
-                    srdo.on_frame(&od, NmtState::Operational, &rx(*id, data, t), &mut q);
+                    srdo.on_frame(NmtState::Operational, &rx(*id, data, t), &mut q);
                     let ev = run(&mut srdo, &mut q, manual_app);
                     assert!(
                         matches!(ev.first(), None | Some(Event::SrdoEvent(_))),
@@ -873,7 +866,7 @@ mod dynamic {
             receive_config(&od, &srdo);
             operational(&od, &mut srdo, 0);
             let mut q = ActionQueue::new();
-            srdo.on_frame(&od, NmtState::Operational, &rx(0x101, &[1, 0], 10), &mut q);
+            srdo.on_frame(NmtState::Operational, &rx(0x101, &[1, 0], 10), &mut q);
             assert!(q.is_empty());
             // At SRVT nothing happens with either setting.
             let at = timers(&mut srdo, 210, switch);
@@ -895,7 +888,6 @@ mod dynamic {
             // With TRUE the half was dropped: its inverted frame is out of
             // order; with FALSE the late frame gives SRVT timeout.
             srdo.on_frame(
-                &od,
                 NmtState::Operational,
                 &rx(0x102, &[0xFE, 0xFF], 212),
                 &mut q,
@@ -1067,13 +1059,8 @@ mod sixty_four {
 
         // Constant-time dispatch: the last SRDO's pair (node 64: 0x17F/0x180).
         let mut q = ActionQueue::new();
-        srdo.on_frame(&od, NmtState::Operational, &rx(0x17F, &[7, 0], 5), &mut q);
-        srdo.on_frame(
-            &od,
-            NmtState::Operational,
-            &rx(0x180, &[0xF8, 0xFF], 6),
-            &mut q,
-        );
+        srdo.on_frame(NmtState::Operational, &rx(0x17F, &[7, 0], 5), &mut q);
+        srdo.on_frame(NmtState::Operational, &rx(0x180, &[0xF8, 0xFF], 6), &mut q);
         assert_eq!(
             run(&mut srdo, &mut q, manual_app)[0],
             Event::SrdoEvent(0x1340)
@@ -1101,7 +1088,7 @@ mod sixty_four {
         let mut timeouts = Vec::new();
         let mut steps = 0;
         loop {
-            let done = srdo.poll(&od, NmtState::Operational, Ticks(251), &mut q);
+            let done = srdo.poll(NmtState::Operational, Ticks(251), &mut q);
             assert!(q.len() <= 5, "one step queues at most five actions");
             steps += 1;
             timeouts.extend(run(&mut srdo, &mut q, manual_app).into_iter().filter_map(
