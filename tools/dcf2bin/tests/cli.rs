@@ -78,14 +78,6 @@ const HEAD: &str = "[DeviceInfo]\nVendorName=x\n\n";
 #[test]
 fn errors_name_file_line_section_and_key() {
     let e = refused(
-        "dtype",
-        &format!("{HEAD}[2000]\nParameterName=x\nDataType=0x0099\nAccessType=rw\n"),
-    );
-    assert!(
-        e.contains("bad.dcf:6: [2000] DataType: data type 0x0099"),
-        "{e}"
-    );
-    let e = refused(
         "value",
         &format!(
             "{HEAD}[2000]\nParameterName=x\nDataType=0x0005\nAccessType=rw\nDefaultValue=0\nParameterValue=256\n"
@@ -102,7 +94,7 @@ fn errors_name_file_line_section_and_key() {
         ),
     );
     assert!(
-        e.contains(":14: [A580sub1] DataType: 0xA580 holds data type 0x0006"),
+        e.contains(":14: [A580sub1] DataType: 0xA580 holds UNSIGNED16 (CiA 405 network variables, seed table 2), not UNSIGNED8"),
         "{e}"
     );
     let e = refused(
