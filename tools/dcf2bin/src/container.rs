@@ -75,7 +75,10 @@ impl Dcf {
         let mut out = vec![0u8; n];
         dcf::encode(&entries, addr, true, pi.as_ref(), &mut out)
             .map_err(|e| whole(format!("{e:?}")))?;
-        verify(&out).map_err(|e| whole(format!("container does not verify: {e}")))?;
+        let v = verify(&out).map_err(|e| whole(format!("container does not verify: {e}")))?;
+        if let Some((i, s, _)) = v.repeated.first() {
+            return Err(whole(format!("0x{i:04X} sub {s} written twice")));
+        }
         Ok(out)
     }
 }
@@ -87,6 +90,8 @@ pub struct Verified {
     pub entries: usize,
     /// Variables the address segment places in the process image.
     pub placed: usize,
+    /// Subindices written more than once, with the number of writes.
+    pub repeated: Vec<(u16, u8, usize)>,
     /// The process image `DynBuildOd` reports (parameter segment, else
     /// the layout of the offset rule), when the container has network
     /// variables or a parameter segment.
@@ -113,22 +118,29 @@ fn placed_size(e: &dcf::Entry<'_>) -> Option<usize> {
 }
 
 /// Checks a container beyond what `DynBuildOd` refuses today
-/// (`Container::parse`): no subindex is set by two entries (the build would
-/// take the last one, and the file said two things), and the process image
-/// the container reports covers every byte the address segment gives its
-/// variables, inside the window of their direction (inputs 0xA000–0xA47F,
-/// outputs 0xA480–0xA8FF); no two variables share bytes.
+/// (`Container::parse`): the process image the container reports covers
+/// every byte the address segment gives its variables, inside the window
+/// of their direction (inputs 0xA000–0xA47F, outputs 0xA480–0xA8FF), and
+/// no two variables share bytes.
+///
+/// A subindex written twice is no error: a CiA 302 concise DCF is a
+/// sequence of writes (a configuration tool writes a PDO's COB-ID invalid,
+/// then the mapping, then the COB-ID valid), and `DynBuildOd` gives the
+/// same result, the last value of every object and each PDO reconfigured
+/// as a unit. They are listed in [`Verified::repeated`]. dcf2bin itself
+/// never repeats an entry (a DCF that describes a subindex twice is
+/// refused).
 pub fn verify(bytes: &[u8]) -> Result<Verified, String> {
     let c = Container::parse(bytes).map_err(|e| format!("{e:?} (kCopDynInvalidConfig)"))?;
-    let mut seen: BTreeMap<(u16, u8), u32> = BTreeMap::new();
+    let mut seen: BTreeMap<(u16, u8), usize> = BTreeMap::new();
     for e in c.entries() {
-        if let Some(first) = seen.insert((e.index, e.sub), e.position) {
-            return Err(format!(
-                "entries {first} and {} (counted from 0) both set 0x{:04X} sub {}: DynBuildOd would keep the last",
-                e.position, e.index, e.sub
-            ));
-        }
+        *seen.entry((e.index, e.sub)).or_default() += 1;
     }
+    let repeated = seen
+        .into_iter()
+        .filter(|(_, n)| *n > 1)
+        .map(|((i, s), n)| (i, s, n))
+        .collect();
     let mut layout = PiLayout::default();
     for e in c.entries_in(dcf::NETVAR_INPUT_BASE, 0xA8FF) {
         layout.add(e.index, e.sub);
@@ -189,6 +201,7 @@ pub fn verify(bytes: &[u8]) -> Result<Verified, String> {
     Ok(Verified {
         entries: c.len(),
         placed,
+        repeated,
         pi,
     })
 }

@@ -48,8 +48,8 @@ OPTIONS:
         --write          with --srdo-crc: store the CRCs in the file
                          (0x13FF sub n ParameterValue)
         --verify <BIN>   check a container (from any tool): what DynBuildOd
-                         refuses, entries given twice, process-image
-                         windows that do not cover the variables
+                         refuses, process-image windows that do not cover
+                         the variables; lists subindices written twice
     -q, --quiet          no summary (warnings are still printed)
     -v, --verbose        every warning (default: of many of one kind, the
                          first three and their number)
@@ -211,6 +211,11 @@ fn run_verify(a: &Args) -> Result<bool, String> {
             p.total, p.input_offset, p.input_size, p.output_offset, p.output_size
         ))
     );
+    for (i, s, n) in &v.repeated {
+        println!(
+            "0x{i:04X} sub {s} written {n} times: DynBuildOd keeps the last value (a concise DCF is a sequence of writes; PDOs are reconfigured as a unit)"
+        );
+    }
     println!("{}", pool_line_of(&bytes));
     Ok(true)
 }
