@@ -22,37 +22,7 @@
 
 use cop::od::DataType;
 
-/// CiA 301 name of a data type.
-pub fn type_name(t: DataType) -> &'static str {
-    use DataType::*;
-    match t {
-        Bool => "BOOLEAN",
-        Int8 => "INTEGER8",
-        Int16 => "INTEGER16",
-        Int24 => "INTEGER24",
-        Int32 => "INTEGER32",
-        Int40 => "INTEGER40",
-        Int48 => "INTEGER48",
-        Int56 => "INTEGER56",
-        Int64 => "INTEGER64",
-        UInt8 => "UNSIGNED8",
-        UInt16 => "UNSIGNED16",
-        UInt24 => "UNSIGNED24",
-        UInt32 => "UNSIGNED32",
-        UInt40 => "UNSIGNED40",
-        UInt48 => "UNSIGNED48",
-        UInt56 => "UNSIGNED56",
-        UInt64 => "UNSIGNED64",
-        Real32 => "REAL32",
-        Real64 => "REAL64",
-        VString => "VISIBLE_STRING",
-        OString => "OCTET_STRING",
-        UString => "UNICODE_STRING",
-        TimeOfDay => "TIME_OF_DAY",
-        TimeDiff => "TIME_DIFFERENCE",
-        Domain => "DOMAIN",
-    }
-}
+pub use cop::od::eds::type_name;
 
 /// A value read from the file, with what was tolerated on the way.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
