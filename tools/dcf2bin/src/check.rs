@@ -413,6 +413,20 @@ pub fn check(
     image_len: Option<usize>,
     pool_size: usize,
 ) -> Result<Report, String> {
+    check_and_export(dcf, container, node, image_len, pool_size, None)
+}
+
+/// [`check`], and when the container builds, the EDS of the node after
+/// the build written to `eds` (`cop::od::eds::write_eds`, with the data
+/// types the file gives the objects the build created).
+pub fn check_and_export(
+    dcf: &Dcf,
+    container: &[u8],
+    node: &Node,
+    image_len: Option<usize>,
+    pool_size: usize,
+    eds: Option<&std::path::Path>,
+) -> Result<Report, String> {
     let _one = LOCK
         .lock()
         .unwrap_or_else(std::sync::PoisonError::into_inner);
@@ -566,6 +580,27 @@ pub fn check(
     if image_len > 0 {
         r.lines.push(format!(
             "  process image: {image_len} bytes handed to DynBuildOd"
+        ));
+    }
+    if let Some(path) = eds {
+        let types = dcf.types();
+        let name = path
+            .file_name()
+            .and_then(|n| n.to_str())
+            .unwrap_or("node.eds");
+        let info = cop::od::eds::EdsInfo {
+            file_name: name,
+            description: "the node after DynBuildOd (dcf2bin --check)",
+            types: &types,
+            ..cop::od::eds::EdsInfo::default()
+        };
+        let mut text = String::new();
+        cop::od::eds::write_eds(stack.od(), &info, &mut text).map_err(|e| e.to_string())?;
+        crate::write_atomically(path, text.as_bytes())
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+        r.lines.push(format!(
+            "  EDS of the node after the build: {}",
+            path.display()
         ));
     }
     POOL.release(stack);

@@ -865,6 +865,15 @@ pub fn load_with(path: &Path, opts: Options) -> Result<(String, Dcf), Error> {
 }
 
 impl Dcf {
+    /// The data type of every subindex, for the EDS export of the node
+    /// after the build (`cop::od::eds::EdsInfo::types`).
+    pub fn types(&self) -> Vec<(u16, u8, DataType)> {
+        self.objects
+            .iter()
+            .map(|o| (o.index, o.sub, o.typ()))
+            .collect()
+    }
+
     /// The value of a subindex.
     pub fn get(&self, index: u16, sub: u8) -> Option<&Object> {
         self.objects

@@ -15,7 +15,7 @@ process-image parameter segment)
 
 USAGE:
     dcf2bin [OPTIONS] <INPUT.dcf|INPUT.eds>
-    dcf2bin --check <NODE> [--objdict FILE] [--image N] <INPUT.dcf>
+    dcf2bin --check <NODE> [--objdict FILE] [--image N] [--eds FILE] <INPUT.dcf>
     dcf2bin --srdo-crc [--write] <INPUT.dcf>
     dcf2bin --verify <CONTAINER.bin>
 
@@ -42,6 +42,9 @@ OPTIONS:
                          in the folder
         --image <N>      with --check: bytes of the process image handed to
                          DynBuildOd (default: what the container reports)
+        --eds <FILE>     with --check: write the EDS of the node after the
+                         build (the library's export, with the data types
+                         the input gives the objects the build created)
         --srdo-crc       print the configuration CRC (object 0x13FF) of
                          every SRDO the file configures, the stored value
                          and the pairs of its mapping
@@ -74,6 +77,7 @@ struct Args {
     check: Option<PathBuf>,
     objdict: Option<PathBuf>,
     image: Option<usize>,
+    eds: Option<PathBuf>,
     verify: bool,
     quiet: bool,
     verbose: bool,
@@ -120,6 +124,7 @@ fn parse_args() -> Result<Option<Args>, String> {
             }
             "--check" => a.check = Some(PathBuf::from(value("--check")?)),
             "--objdict" => a.objdict = Some(PathBuf::from(value("--objdict")?)),
+            "--eds" => a.eds = Some(PathBuf::from(value("--eds")?)),
             "--strict" => a.strict = true,
             "--dump" => a.dump = true,
             "--srdo-crc" => a.srdo_crc = true,
@@ -141,8 +146,8 @@ fn parse_args() -> Result<Option<Args>, String> {
     if a.write && !a.srdo_crc {
         return Err("--write belongs to --srdo-crc".into());
     }
-    if (a.objdict.is_some() || a.image.is_some()) && a.check.is_none() {
-        return Err("--objdict and --image belong to --check".into());
+    if (a.objdict.is_some() || a.image.is_some() || a.eds.is_some()) && a.check.is_none() {
+        return Err("--objdict, --image and --eds belong to --check".into());
     }
     let modes = [a.dump, a.srdo_crc, a.check.is_some(), a.verify];
     if modes.iter().filter(|m| **m).count() > 1 {
@@ -334,7 +339,7 @@ fn run_check(a: &Args, node_path: &Path, dcf: &Dcf, bytes: &[u8]) -> Result<bool
         node_path.display(),
         node.objects.len()
     );
-    let r = check::check(dcf, bytes, &node, a.image, pool_size)?;
+    let r = check::check_and_export(dcf, bytes, &node, a.image, pool_size, a.eds.as_deref())?;
     for l in &r.lines {
         println!("{l}");
     }

@@ -103,6 +103,38 @@ fn python_canopen_and_dcf2bin_read_every_test_file_alike() {
     }
 }
 
+/// The node after the build of every type's container, exported as EDS
+/// (`--check ... --eds`): python-canopen reads each object with the type
+/// the input gave it (INTEGER24 -1 as INTEGER24, not UNSIGNED24 0xFFFFFF)
+/// and the input's value.
+#[test]
+fn the_node_after_the_build_exports_the_types_of_the_input() {
+    let (_, dcf) = dcf2bin::load(&common::data("all_types.eds"), Some(3)).unwrap();
+    let mut part = dcf.clone();
+    part.objects.retain(|o| o.index < 0x2000);
+    let node = dcf2bin::node::from_eds(&part);
+    let dir = temp_dir("export-types");
+    let eds = dir.join("after.eds");
+    let c = dcf.container().unwrap();
+    let r =
+        dcf2bin::check::check_and_export(&dcf, &c, &node, None, usize::MAX, Some(&eds)).unwrap();
+    assert!(r.builds, "{:?}", r.lines);
+    let py = python_dump(&eds);
+    let mut seen = 0;
+    for o in dcf.objects.iter().filter(|o| o.index >= 0x2000) {
+        let p = py
+            .iter()
+            .find(|p| (p.index, p.sub) == (o.index, o.sub))
+            .unwrap();
+        let what = format!("{:04X}", o.index);
+        assert_eq!(p.data_type, o.data_type, "{what}");
+        assert_eq!(p.hex.as_deref(), Some(hex(&o.data).as_str()), "{what}");
+        seen += 1;
+    }
+    assert_eq!(seen, 25);
+    let _ = std::fs::remove_dir_all(dir);
+}
+
 node!(eds_node);
 
 #[test]
