@@ -47,7 +47,8 @@ OPTIONS:
                          the input gives the objects the build created)
         --srdo-crc       print the configuration CRC (object 0x13FF) of
                          every SRDO the file configures, the stored value
-                         and the pairs of its mapping
+                         and the pairs of its mapping, and run the
+                         library's SRDO configuration check on the file
         --write          with --srdo-crc: store the CRCs in the file
                          (0x13FF sub n ParameterValue)
         --verify <BIN>   check a container (from any tool): what DynBuildOd
@@ -410,6 +411,17 @@ fn run(a: &Args) -> Result<bool, String> {
             );
             for ((i, s), (ii, is)) in &r.pairs {
                 println!("    0x{i:04X} sub {s} / inverted 0x{ii:04X} sub {is}");
+            }
+        }
+        if !reports.is_empty() {
+            match dcf2bin::safety::library_check(&dcf)? {
+                None => println!(
+                    "SRDO configuration check (CcmCheckSrdoConfig, with these CRCs): passes"
+                ),
+                Some((k, i)) => println!(
+                    "SRDO configuration check (CcmCheckSrdoConfig, with these CRCs): {} at 0x{i:04X}",
+                    check::kernel_name(k)
+                ),
             }
         }
         if a.write {

@@ -296,6 +296,35 @@ impl Dcf {
     }
 }
 
+/// The library's own SRDO configuration check (`CcmCheckSrdoConfig`,
+/// SAFETY_BEHAVIOUR.md section 2: timing, COB-IDs, mapping, length,
+/// granularity) on the configuration the file describes, the file's
+/// objects taken as the node's dictionary ([`crate::node::from_eds`]) and
+/// 0x13FF holding the CRCs computed here (a stored CRC that differs is
+/// reported by [`SrdoReport::stored`]). `Ok(None)` when it passes,
+/// `Ok(Some((code, index)))` for the first SRDO it refuses.
+pub fn library_check(d: &Dcf) -> Result<Option<(cop::CopKernel, u16)>, String> {
+    let mut with_crcs = d.clone();
+    for r in d.srdo_reports().map_err(|e| e.to_string())? {
+        if let Some(o) = with_crcs
+            .objects
+            .iter_mut()
+            .find(|o| (o.index, o.sub) == (0x13FF, r.n))
+        {
+            o.data = r.crc.to_le_bytes().to_vec();
+        }
+    }
+    let od = crate::node::from_eds(&with_crcs).dictionary()?;
+    let mut srdo = cop::srdo::Srdo::new();
+    srdo.init(&od).map_err(|k| {
+        format!(
+            "the SRDO objects of the file are incomplete for the library: {}",
+            crate::check::kernel_name(k)
+        )
+    })?;
+    Ok(srdo.check_config(&od).err())
+}
+
 /// Writes `crcs` into the DCF text as the values of 0x13FF sub n
 /// (`ParameterValue` when the section has one or is a DCF, else
 /// `DefaultValue`); every other line stays as it was. The sections must

@@ -122,6 +122,24 @@ fn safety_keys_round_trip_between_the_export_and_dcf2bin() {
         out.contains("    0x6200 sub 2 / inverted 0x6300 sub 2\n"),
         "{out}"
     );
+    assert!(
+        out.contains("SRDO configuration check (CcmCheckSrdoConfig, with these CRCs): passes"),
+        "{out}"
+    );
+    // The library's check on a configuration it refuses: SRDO 2 with the
+    // COB-ID 1 of SRDO 1.
+    let clash = eds.replacen("DefaultValue=0x103\n", "DefaultValue=0x101\n", 1);
+    assert_ne!(clash, eds);
+    std::fs::write(&path, &clash).unwrap();
+    let o = Command::new(env!("CARGO_BIN_EXE_dcf2bin"))
+        .args(["--srdo-crc", path.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        out.contains("(CcmCheckSrdoConfig, with these CRCs): kCopSrdoCfgIdError"),
+        "{out}"
+    );
     let _ = std::fs::remove_dir_all(dir);
 }
 
