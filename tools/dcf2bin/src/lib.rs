@@ -97,6 +97,19 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
+impl ini::IniError {
+    /// The error with the file it is in.
+    pub fn in_file(self, file: &Path) -> Error {
+        Error {
+            file: file.to_path_buf(),
+            line: Some(self.line),
+            section: self.section,
+            key: self.key,
+            msg: self.msg,
+        }
+    }
+}
+
 impl Error {
     /// An error about the whole file.
     pub fn whole(file: &Path, msg: impl Into<String>) -> Error {
@@ -620,13 +633,7 @@ pub fn parse(text: &str, file: &Path, node_override: Option<u8>) -> Result<Dcf, 
 
 /// Parses the text of a DCF/EDS with `opts`.
 pub fn parse_with(text: &str, file: &Path, opts: Options) -> Result<Dcf, Error> {
-    let ini = ini::Ini::parse(text).map_err(|e| Error {
-        file: file.to_path_buf(),
-        line: Some(e.line),
-        section: e.section,
-        key: e.key,
-        msg: e.msg,
-    })?;
+    let ini = ini::Ini::parse(text).map_err(|e| e.in_file(file))?;
     let mut r = Reader {
         file,
         ini: &ini,

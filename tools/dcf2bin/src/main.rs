@@ -414,14 +414,11 @@ fn run(a: &Args) -> Result<bool, String> {
             }
         }
         if !reports.is_empty() {
-            match dcf2bin::safety::library_check(&dcf)? {
-                None => println!(
-                    "SRDO configuration check (CcmCheckSrdoConfig, with these CRCs): passes"
-                ),
-                Some((k, i)) => println!(
-                    "SRDO configuration check (CcmCheckSrdoConfig, with these CRCs): {} at 0x{i:04X}",
-                    check::kernel_name(k)
-                ),
+            let head = "SRDO configuration check (CcmCheckSrdoConfig, with these CRCs)";
+            match dcf2bin::safety::library_check(&dcf) {
+                Ok(None) => println!("{head}: passes"),
+                Ok(Some((k, i))) => println!("{head}: {} at 0x{i:04X}", check::kernel_name(k)),
+                Err(e) => println!("{head}: not run: {e}"),
             }
         }
         if a.write {

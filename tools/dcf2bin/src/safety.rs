@@ -318,7 +318,7 @@ pub fn library_check(d: &Dcf) -> Result<Option<(cop::CopKernel, u16)>, String> {
     let mut srdo = cop::srdo::Srdo::new();
     srdo.init(&od).map_err(|k| {
         format!(
-            "the SRDO objects of the file are incomplete for the library: {}",
+            "the file does not have every object an SRDO needs (0x1301+n sub 1, 2, 3, 5, 6, 0x1381+n, 0x13FE, 0x13FF sub n): {}",
             crate::check::kernel_name(k)
         )
     })?;
@@ -330,13 +330,7 @@ pub fn library_check(d: &Dcf) -> Result<Option<(cop::CopKernel, u16)>, String> {
 /// `DefaultValue`); every other line stays as it was. The sections must
 /// exist.
 pub fn write_crcs(text: &str, file: &std::path::Path, crcs: &[(u8, u16)]) -> Result<String, Error> {
-    let ini = crate::ini::Ini::parse(text).map_err(|e| Error {
-        file: file.to_path_buf(),
-        line: Some(e.line),
-        section: e.section,
-        key: e.key,
-        msg: e.msg,
-    })?;
+    let ini = crate::ini::Ini::parse(text).map_err(|e| e.in_file(file))?;
     let newline = if text.contains("\r\n") { "\r\n" } else { "\n" };
     let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
     // Lines to insert after (line number, text), applied from the bottom.

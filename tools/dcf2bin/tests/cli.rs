@@ -5,20 +5,8 @@
 mod common;
 
 use std::path::Path;
-use std::process::{Command, Output};
 
-use common::{sample, temp_dir};
-
-fn dcf2bin(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_dcf2bin"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn text(b: &[u8]) -> String {
-    String::from_utf8_lossy(b).into_owned()
-}
+use common::{dcf2bin, sample, temp_dir, text};
 
 #[test]
 fn help_and_usage_errors() {
@@ -178,6 +166,14 @@ fn srdo_crcs_are_printed_and_written_back() {
     let o = dcf2bin(&["--srdo-crc", input.to_str().unwrap()]);
     assert!(o.status.success(), "{}", text(&o.stderr));
     assert!(text(&o.stdout).contains("SRDO 1 (0x1301): 0x13FF sub 1 = 0xD879"));
+    // Without 0x13FE the library's check cannot run; the CRCs are printed.
+    assert!(
+        text(&o.stdout).contains(
+            "(CcmCheckSrdoConfig, with these CRCs): not run: the file does not have every object"
+        ),
+        "{}",
+        text(&o.stdout)
+    );
     assert_eq!(
         std::fs::read_to_string(&input).unwrap(),
         original,

@@ -9,9 +9,8 @@
 mod common;
 
 use std::path::Path;
-use std::process::{Command, Output};
 
-use common::{data, hex, temp_dir};
+use common::{data, dcf2bin, hex, temp_dir, text};
 use dcf2bin::node::{self, Node};
 use dcf2bin::{Dcf, Options, WarningKind, check};
 
@@ -24,17 +23,6 @@ fn load(name: &str, strict: bool) -> Result<Dcf, dcf2bin::Error> {
         },
     )
     .map(|(_, d)| d)
-}
-
-fn dcf2bin(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_dcf2bin"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn text(b: &[u8]) -> String {
-    String::from_utf8_lossy(b).into_owned()
 }
 
 /// The warnings of a file as (kind, line, message start).

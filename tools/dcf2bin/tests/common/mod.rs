@@ -5,7 +5,7 @@
 #![allow(dead_code)]
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::process::{Command, Output};
 
 use cop::ccm::Stack;
 use cop::od::ObjectDictionary;
@@ -163,4 +163,17 @@ pub fn temp_dir(name: &str) -> PathBuf {
 /// Hex digits of bytes, upper case.
 pub fn hex(b: &[u8]) -> String {
     b.iter().map(|x| format!("{x:02X}")).collect()
+}
+
+/// Runs the dcf2bin command line.
+pub fn dcf2bin(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_dcf2bin"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+/// Output bytes as text.
+pub fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
 }
