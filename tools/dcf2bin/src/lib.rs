@@ -31,11 +31,14 @@
 //!   UNSIGNED8 under 0xA580), inconsistent safety keys ([`safety`]).
 //! * Skipped with a warning ([`WarningKind::Skipped`]), refused with
 //!   `--strict`: subindices of a data type the container cannot carry
-//!   (python-canopen skips them too).
+//!   (python-canopen skips them too), and a subindex without value whose
+//!   limits exclude 0.
 //! * Tolerated with a warning ([`WarningKind::Tolerated`]), refused with
 //!   `--strict`: forms outside CiA 306 whose meaning is clear (a C integer
-//!   suffix, a VISIBLE_STRING with characters outside 0x20..0x7E, a wrong
-//!   `SubNumber`).
+//!   suffix, BOOLEAN `True`/`False`, a DOMAIN `0`, a VISIBLE_STRING with
+//!   characters outside 0x20..0x7E, a wrong `SubNumber`, safety keys
+//!   without `CANopenSafetySupported=1`), and a number without value
+//!   (written as 0).
 //! * Left out with a note ([`WarningKind::LeftOut`], also with `--strict`):
 //!   objects whose write is a command, not a configuration ([`is_command_object`]).
 //!
