@@ -7,15 +7,15 @@
 //! * One index-segment entry per subindex of every object section
 //!   (`[XXXX]`, `[XXXXsubN]`, and `CompactSubObj` arrays), ascending by
 //!   index and subindex, with the configured value: `ParameterValue` (a
-//!   DCF) if present, else `DefaultValue`, else 0 / empty. `$NODEID` is
-//!   replaced by the node-ID (`--node-id`, else `[DeviceComissioning]
-//!   NodeID`). Numbers are written little-endian in the width of their
-//!   type, strings as their bytes, OCTET_STRING and DOMAIN values from hex
-//!   digits.
+//!   DCF) if present, else `DefaultValue`, else 0 / empty. Values are read
+//!   and encoded as [`value`] describes (CiA 306 forms, CiA 301 encodings).
 //! * One attribute byte per entry: BOOLEAN 0x01, VISIBLE_STRING 0x08,
 //!   NUMERIC_VALUE 0x10 (integers and reals), none for the others (copied
 //!   bytewise as DOMAIN), READ 0x20 (`ro`, `rw`, `rwr`, `rww`, `const`),
 //!   WRITE 0x40 (`wo`, `rw`, `rwr`, `rww`), PDO_MAPP 0x80 (`PDOMapping=1`).
+//!   The container has no room for the data type (seed 2.1.4, Tabelle 1):
+//!   a new NUMERIC object becomes UNSIGNEDn of its size in the dynamic OD,
+//!   with the same bytes.
 //! * The address segment (one WORD per process-image candidate): network
 //!   variables 0xA000–0xA8FF get the offset of the CiA 302/405 rule (seed
 //!   chapter 6: inputs from 0, outputs after them on the next multiple of
@@ -23,16 +23,48 @@
 //! * The process-image parameter segment with the resulting sizes, when
 //!   the file has network variables.
 //!
-//! Network variables must have the data type of seed table 2 (an
-//! UNSIGNED8 under 0xA580 is refused with the line of its `DataType`).
+//! # What is refused, skipped or left out
+//! * Refused (nothing written, the error names file, line, section and
+//!   key): malformed lines, a section or key given twice, a subindex
+//!   described twice, values that do not fit their type, a value outside
+//!   `LowLimit`..`HighLimit`, network variables of the wrong type (an
+//!   UNSIGNED8 under 0xA580), inconsistent safety keys ([`safety`]).
+//! * Skipped with a warning ([`WarningKind::Skipped`]), refused with
+//!   `--strict`: subindices of a data type the container cannot carry
+//!   (python-canopen skips them too), and a subindex without value whose
+//!   limits exclude 0.
+//! * Tolerated with a warning ([`WarningKind::Tolerated`]), refused with
+//!   `--strict`: forms outside CiA 306 whose meaning is clear (a C integer
+//!   suffix, BOOLEAN `True`/`False`, a DOMAIN `0`, a VISIBLE_STRING with
+//!   characters outside 0x20..0x7E, a wrong `SubNumber`, safety keys
+//!   without `CANopenSafetySupported=1`), and a number without value
+//!   (written as 0).
+//! * Left out with a note ([`WarningKind::LeftOut`], also with `--strict`):
+//!   objects whose write is a command, not a configuration ([`is_command_object`]).
+//!
+//! # Limits
+//! `LowLimit`/`HighLimit` are checked here, at conversion time: the
+//! container format has no room for them (seed 2.1.4: one attribute byte
+//! per entry). An existing object of the node keeps the range its firmware
+//! gives it and checks every value written, container values included.
 
-use std::collections::BTreeMap;
+pub mod check;
+pub mod container;
+pub mod ini;
+pub mod node;
+pub mod safety;
+pub mod value;
+
+use std::collections::{BTreeMap, BTreeSet};
 use std::fmt;
 use std::path::{Path, PathBuf};
 
 use cop::od::DataType;
-use cop::od::dcf::{self, EntrySpec, NOT_PLACED, PiLayout, PiParams, attr};
-use ini::{Ini, ParseOption};
+use cop::od::dcf::{self, attr};
+
+pub use safety::write_crcs;
+pub use value::parse_int;
+use value::{Number, type_name};
 
 /// An error with the place it comes from.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -59,6 +91,7 @@ impl fmt::Display for Error {
         match (&self.section, &self.key) {
             (Some(s), Some(k)) => write!(f, " [{s}] {k}:")?,
             (Some(s), None) => write!(f, " [{s}]:")?,
+            (None, Some(k)) => write!(f, " {k}:")?,
             _ => {}
         }
         write!(f, " {}", self.msg)
@@ -67,8 +100,75 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
-/// One subindex with its configured value.
+impl ini::IniError {
+    /// The error with the file it is in.
+    pub fn in_file(self, file: &Path) -> Error {
+        Error {
+            file: file.to_path_buf(),
+            line: Some(self.line),
+            section: self.section,
+            key: self.key,
+            msg: self.msg,
+        }
+    }
+}
+
+impl Error {
+    /// An error about the whole file.
+    pub fn whole(file: &Path, msg: impl Into<String>) -> Error {
+        Error {
+            file: file.to_path_buf(),
+            line: None,
+            section: None,
+            key: None,
+            msg: msg.into(),
+        }
+    }
+}
+
+/// Why a warning was given.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum WarningKind {
+    /// Something the container cannot carry was left out (refused with
+    /// `--strict`).
+    Skipped,
+    /// A form outside CiA 306 was accepted (refused with `--strict`).
+    Tolerated,
+    /// An object that is no configuration was left out (always).
+    LeftOut,
+}
+
+/// A warning, with the place it is about.
 #[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Warning {
+    /// Why.
+    pub kind: WarningKind,
+    /// Where and what.
+    pub at: Error,
+}
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let what = match self.kind {
+            WarningKind::Skipped => "warning (skipped)",
+            WarningKind::Tolerated => "warning (tolerated)",
+            WarningKind::LeftOut => "note (left out)",
+        };
+        write!(f, "{what}: {}", self.at)
+    }
+}
+
+/// How a file is read.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Options {
+    /// Node-ID for `$NODEID` (else `[DeviceComissioning] NodeID`).
+    pub node_id: Option<u8>,
+    /// Refuse what would be skipped or tolerated with a warning.
+    pub strict: bool,
+}
+
+/// One subindex with its configured value.
+#[derive(Debug, Clone, PartialEq)]
 pub struct Object {
     /// Index.
     pub index: u16,
@@ -84,6 +184,26 @@ pub struct Object {
     pub data: Vec<u8>,
     /// The attribute byte of the container.
     pub attr: u8,
+    /// The section that describes the subindex.
+    pub section: String,
+    /// Line of that section.
+    pub line: usize,
+    /// Line of the key the value comes from (the section's without one).
+    pub value_line: usize,
+    /// `LowLimit` and `HighLimit`, when given.
+    pub limits: (Option<Number>, Option<Number>),
+    /// `SRDOMapping=1` (CiA 306, CANopen safety).
+    pub srdo_mapping: bool,
+    /// `InvertedSRAD`: index and subindex of the inverted safety
+    /// application data (CiA 306), with its line.
+    pub inverted_srad: Option<(u16, u8, usize)>,
+}
+
+impl Object {
+    /// The data type.
+    pub fn typ(&self) -> DataType {
+        DataType::from_code(self.data_type).unwrap_or(DataType::Domain)
+    }
 }
 
 /// A parsed DCF/EDS.
@@ -95,149 +215,37 @@ pub struct Dcf {
     pub node_id: Option<u8>,
     /// Every subindex, ascending.
     pub objects: Vec<Object>,
+    /// What was skipped, tolerated or left out.
+    pub warnings: Vec<Warning>,
+    /// `[DeviceInfo] CANopenSafetySupported`, when given.
+    pub safety_supported: Option<bool>,
 }
 
-/// Finds the 1-based line of `[section]` (and of `key` inside it) in
-/// `text`: rust-ini does not keep line numbers, so errors look them up.
-pub fn locate(text: &str, section: &str, key: Option<&str>) -> Option<usize> {
-    let mut in_section = false;
-    let mut section_line = None;
-    for (n, raw) in text.lines().enumerate() {
-        let line = raw.trim();
-        if let Some(rest) = line.strip_prefix('[') {
-            let name = rest.split(']').next().unwrap_or("").trim();
-            if in_section {
-                break;
-            }
-            in_section = name.eq_ignore_ascii_case(section);
-            if in_section {
-                section_line = Some(n + 1);
-                if key.is_none() {
-                    return section_line;
-                }
-            }
-            continue;
+/// Objects whose write is a command, not a configuration: the container
+/// leaves them out (an EDS describes them with the value they read).
+/// * 0x1003 pre-defined error field: the history is read-only; writing 0
+///   to subindex 0 clears it (CiA 301 7.5.2.4).
+/// * 0x1010 store parameters, 0x1011 restore default parameters: reading
+///   gives the capability (1: "saves on command"), writing the signature
+///   `save`/`load` triggers the action (CiA 301 7.5.2.13/14).
+/// * 0x1023 OS command, 0x1F25 configure slave, 0x1F51 program control:
+///   writing starts an action (CiA 301, CiA 302).
+pub fn is_command_object(index: u16) -> Option<&'static str> {
+    Some(match index {
+        0x1003 => {
+            "0x1003 (pre-defined error field) is the error history: read-only, and writing 0 to subindex 0 clears it (CiA 301 7.5.2.4)"
         }
-        if in_section {
-            if let (Some(k), Some((lhs, _))) = (key, line.split_once('=')) {
-                if lhs.trim().eq_ignore_ascii_case(k) {
-                    return Some(n + 1);
-                }
-            }
+        0x1010 => {
+            "0x1010 (store parameters) reads the storage capability; writing `save` stores (CiA 301 7.5.2.13): a command"
         }
-    }
-    section_line
-}
-
-struct Ctx<'a> {
-    file: &'a Path,
-    text: &'a str,
-}
-
-impl Ctx<'_> {
-    fn err(&self, section: &str, key: Option<&str>, msg: impl Into<String>) -> Error {
-        Error {
-            file: self.file.to_path_buf(),
-            line: locate(self.text, section, key),
-            section: Some(section.to_string()),
-            key: key.map(str::to_string),
-            msg: msg.into(),
+        0x1011 => {
+            "0x1011 (restore default parameters) reads the capability; writing `load` restores (CiA 301 7.5.2.14): a command"
         }
-    }
-}
-
-/// Parses an integer the CiA 306 way: `0x` hex, a leading `0` octal,
-/// otherwise decimal, optionally negative; `$NODEID` (with `+` on either
-/// side) adds the node-ID.
-pub fn parse_int(v: &str, node_id: Option<u8>) -> Result<i128, String> {
-    let compact: String = v.chars().filter(|c| !c.is_whitespace()).collect();
-    let upper = compact.to_ascii_uppercase();
-    if upper.contains("$NODEID") {
-        let node = node_id.ok_or(
-            "uses $NODEID but no node-ID is known (give --node-id or [DeviceComissioning] NodeID)",
-        )?;
-        let rest = upper.replace("$NODEID", "");
-        let rest = rest.trim_matches('+');
-        let base = if rest.is_empty() {
-            0
-        } else {
-            parse_int(rest, None)?
-        };
-        return Ok(base + i128::from(node));
-    }
-    let (neg, digits) = match upper.strip_prefix('-') {
-        Some(d) => (true, d),
-        None => (false, upper.as_str()),
-    };
-    let magnitude = if let Some(h) = digits.strip_prefix("0X") {
-        i128::from_str_radix(h, 16)
-    } else if digits.len() > 1 && digits.starts_with('0') {
-        i128::from_str_radix(&digits[1..], 8)
-    } else {
-        digits.parse::<i128>()
-    }
-    .map_err(|_| format!("`{v}` is not a number"))?;
-    Ok(if neg { -magnitude } else { magnitude })
-}
-
-/// Encodes `value` (the text of the file) for data type `t`.
-fn encode_value(t: DataType, value: &str, node_id: Option<u8>) -> Result<Vec<u8>, String> {
-    let value = value.trim();
-    match t {
-        DataType::VString | DataType::UString => Ok(value.as_bytes().to_vec()),
-        DataType::OString | DataType::Domain => {
-            let hex: String = value.chars().filter(|c| !c.is_whitespace()).collect();
-            let hex = hex
-                .strip_prefix("0x")
-                .or_else(|| hex.strip_prefix("0X"))
-                .unwrap_or(&hex);
-            if hex.len() % 2 != 0 {
-                return Err(format!("`{value}`: odd number of hex digits"));
-            }
-            (0..hex.len())
-                .step_by(2)
-                .map(|i| u8::from_str_radix(&hex[i..i + 2], 16))
-                .collect::<Result<Vec<_>, _>>()
-                .map_err(|_| format!("`{value}` is not hex digits"))
-        }
-        DataType::Real32 | DataType::Real64 => {
-            let f: f64 = if value.is_empty() {
-                0.0
-            } else {
-                value
-                    .parse()
-                    .map_err(|_| format!("`{value}` is not a number"))?
-            };
-            Ok(if t == DataType::Real32 {
-                (f as f32).to_le_bytes().to_vec()
-            } else {
-                f.to_le_bytes().to_vec()
-            })
-        }
-        _ => {
-            let width = t.wire_size().unwrap_or(0);
-            let v = if value.is_empty() {
-                0
-            } else {
-                parse_int(value, node_id)?
-            };
-            let bits = 8 * width as u32;
-            let (lo, hi) = if t.is_signed() {
-                (-(1i128 << (bits - 1)), (1i128 << (bits - 1)) - 1)
-            } else if t == DataType::Bool {
-                (0, 1)
-            } else {
-                (0, (1i128 << bits) - 1)
-            };
-            if v < lo || v > hi {
-                return Err(format!(
-                    "{v} is out of range {lo}..={hi} for data type 0x{:04X}",
-                    t.code()
-                ));
-            }
-            Ok((v as u64).to_le_bytes()[..width].to_vec())
-        }
-    }
+        0x1023 => "0x1023 (OS command): writing executes a command (CiA 301)",
+        0x1F25 => "0x1F25 (configure slave): writing starts a configuration (CiA 302)",
+        0x1F51 => "0x1F51 (program control): writing starts or stops a program (CiA 302-3)",
+        _ => return None,
+    })
 }
 
 /// The container attribute of an object.
@@ -261,15 +269,19 @@ pub fn attribute(t: DataType, access: &str, pdo_mapping: bool) -> u8 {
 }
 
 fn is_object_section(name: &str) -> Option<u16> {
-    (name.len() == 4)
+    (name.len() == 4 && name.chars().all(|c| c.is_ascii_hexdigit()))
         .then(|| u16::from_str_radix(name, 16).ok())
         .flatten()
 }
 
+/// `XXXXsubN` (`sub` in any case, N hex).
 fn is_sub_section(name: &str) -> Option<(u16, u8)> {
     let lower = name.to_ascii_lowercase();
     let (i, s) = lower.split_once("sub")?;
-    if i.len() != 4 || s.is_empty() {
+    if i.len() != 4 || s.is_empty() || s.len() > 2 {
+        return None;
+    }
+    if !(i.chars().all(|c| c.is_ascii_hexdigit()) && s.chars().all(|c| c.is_ascii_hexdigit())) {
         return None;
     }
     Some((
@@ -278,37 +290,372 @@ fn is_sub_section(name: &str) -> Option<(u16, u8)> {
     ))
 }
 
+/// Where the value of a subindex is written.
+struct ValueAt<'a> {
+    section: String,
+    key: String,
+    text: &'a str,
+}
+
+/// Reads one file.
+struct Reader<'a> {
+    file: &'a Path,
+    ini: &'a ini::Ini,
+    opts: Options,
+    node_id: Option<u8>,
+    warnings: Vec<Warning>,
+}
+
+impl<'a> Reader<'a> {
+    fn place(&self, section: &str, key: Option<&str>) -> Error {
+        let s = self.ini.section(section);
+        let line = match (s, key) {
+            (Some(s), Some(k)) => s.key(k).map(|k| k.line).or(Some(s.line)),
+            (Some(s), None) => Some(s.line),
+            _ => None,
+        };
+        Error {
+            file: self.file.to_path_buf(),
+            line,
+            section: Some(section.to_string()),
+            key: key.map(str::to_string),
+            msg: String::new(),
+        }
+    }
+
+    fn err(&self, section: &str, key: Option<&str>, msg: impl Into<String>) -> Error {
+        Error {
+            msg: msg.into(),
+            ..self.place(section, key)
+        }
+    }
+
+    /// Records a warning; with `--strict` a skipped or tolerated one is an
+    /// error.
+    fn warn(
+        &mut self,
+        kind: WarningKind,
+        section: &str,
+        key: Option<&str>,
+        msg: impl Into<String>,
+    ) -> Result<(), Error> {
+        let at = self.err(section, key, msg);
+        if self.opts.strict && kind != WarningKind::LeftOut {
+            return Err(Error {
+                msg: format!("{} (refused: --strict)", at.msg),
+                ..at
+            });
+        }
+        self.warnings.push(Warning { kind, at });
+        Ok(())
+    }
+
+    fn get(&self, sec: &str, key: &str) -> Option<&'a str> {
+        self.ini.get(sec, key)
+    }
+
+    fn flag(&mut self, sec: &str, key: &str) -> Result<Option<bool>, Error> {
+        let Some(v) = self.get(sec, key).filter(|v| !v.is_empty()) else {
+            return Ok(None);
+        };
+        let v = v.to_string();
+        match v.to_ascii_lowercase().as_str() {
+            "true" | "false" => {
+                self.warn(
+                    WarningKind::Tolerated,
+                    sec,
+                    Some(key),
+                    format!("`{v}`: CiA 306 booleans are 0 or 1"),
+                )?;
+                Ok(Some(v.eq_ignore_ascii_case("true")))
+            }
+            _ => match parse_int(&v, None) {
+                Ok(0) => Ok(Some(false)),
+                Ok(1) => Ok(Some(true)),
+                _ => Err(self.err(sec, Some(key), format!("`{v}`: a boolean is 0 or 1"))),
+            },
+        }
+    }
+
+    /// The data type of a variable section, or `None` (with a warning) when
+    /// the container cannot carry it.
+    fn data_type(&mut self, sec: &str) -> Result<Option<DataType>, Error> {
+        let text = self
+            .get(sec, "DataType")
+            .filter(|v| !v.is_empty())
+            .ok_or_else(|| self.err(sec, None, "no DataType"))?
+            .to_string();
+        let code = parse_int(&text, None).map_err(|m| self.err(sec, Some("DataType"), m))?;
+        match u16::try_from(code).ok().and_then(DataType::from_code) {
+            Some(t) => Ok(Some(t)),
+            None => {
+                let why = match code {
+                    0x20..=0x25 => "a structure type of CiA 301 (only its subindices are values)",
+                    0x0E | 0x17 => "reserved in CiA 301",
+                    0x40..=0x25F => "a manufacturer or profile type (CiA 301 7.4.7)",
+                    _ => "not a CiA 301 basic type",
+                };
+                self.warn(
+                    WarningKind::Skipped,
+                    sec,
+                    Some("DataType"),
+                    format!(
+                        "data type 0x{code:04X} is {why}; the container cannot carry it: object {sec} left out"
+                    ),
+                )?;
+                Ok(None)
+            }
+        }
+    }
+
+    /// The value of a variable: `ParameterValue`, else `DefaultValue`, as
+    /// (key, text).
+    fn value_key(&self, sec: &str) -> (String, &'a str) {
+        match (
+            self.get(sec, "ParameterValue"),
+            self.get(sec, "DefaultValue"),
+        ) {
+            (Some(v), _) => ("ParameterValue".into(), v),
+            (None, Some(v)) => ("DefaultValue".into(), v),
+            (None, None) => ("DefaultValue".into(), ""),
+        }
+    }
+
+    /// One subindex described by section `sec` (or, for compact arrays, by
+    /// the object's section with a value from `value`).
+    fn variable(
+        &mut self,
+        sec: &str,
+        index: u16,
+        sub: u8,
+        value: Option<ValueAt<'_>>,
+    ) -> Result<Option<Object>, Error> {
+        let Some(t) = self.data_type(sec)? else {
+            return Ok(None);
+        };
+        if let Some(nv) = dcf::network_variable(index) {
+            if sub != 0 && nv.typ != t {
+                return Err(self.err(
+                    sec,
+                    Some("DataType"),
+                    format!(
+                        "0x{index:04X} holds {} (CiA 405 network variables, seed table 2), not {}",
+                        type_name(nv.typ),
+                        type_name(t)
+                    ),
+                ));
+            }
+        }
+        let access = self
+            .get(sec, "AccessType")
+            .ok_or_else(|| self.err(sec, None, "no AccessType"))?
+            .to_ascii_lowercase();
+        if !matches!(
+            access.as_str(),
+            "ro" | "wo" | "rw" | "rwr" | "rww" | "const"
+        ) {
+            return Err(self.err(
+                sec,
+                Some("AccessType"),
+                format!("`{access}` is not an access type (ro, wo, rw, rwr, rww, const)"),
+            ));
+        }
+        let pdo_mapping = self.flag(sec, "PDOMapping")?.unwrap_or(false);
+        let v = match value {
+            Some(v) => v,
+            None => {
+                let (key, text) = self.value_key(sec);
+                ValueAt {
+                    section: sec.to_string(),
+                    key,
+                    text,
+                }
+            }
+        };
+        let (value_sec, key, text) = (v.section, v.key, v.text);
+        let enc = value::encode(t, text, self.node_id)
+            .map_err(|m| self.err(&value_sec, Some(&key), m))?;
+        for note in &enc.tolerated {
+            self.warn(WarningKind::Tolerated, &value_sec, Some(&key), note.clone())?;
+        }
+        let limits = self.limits(sec, t)?;
+        let no_value = text.trim().is_empty() && t.wire_size().is_some();
+        if let Err(m) = in_limits(t, &enc.data, limits, text) {
+            if !text.trim().is_empty() {
+                return Err(self.err(&value_sec, Some(&key), m));
+            }
+            // No value: 0 would be an invented value the object refuses.
+            self.warn(
+                WarningKind::Skipped,
+                sec,
+                Some(&key),
+                format!("{m}: subindex left out (give it a ParameterValue)"),
+            )?;
+            return Ok(None);
+        }
+        if no_value {
+            self.warn(
+                WarningKind::Tolerated,
+                &value_sec,
+                Some(&key),
+                "no value: 0 goes into the container (for an object the node has, its value is replaced)",
+            )?;
+        }
+        let srdo_mapping = self.flag(sec, "SRDOMapping")?.unwrap_or(false);
+        let inverted_srad = self.inverted_srad(sec)?;
+        let line = self.ini.section(sec).map_or(0, |s| s.line);
+        let value_line = self
+            .ini
+            .section(&value_sec)
+            .and_then(|s| s.key(&key))
+            .map_or(line, |k| k.line);
+        Ok(Some(Object {
+            index,
+            sub,
+            data_type: t.code().into(),
+            attr: attribute(t, &access, pdo_mapping),
+            access,
+            pdo_mapping,
+            data: enc.data,
+            section: sec.to_string(),
+            line,
+            value_line,
+            limits,
+            srdo_mapping,
+            inverted_srad,
+        }))
+    }
+
+    /// Reads `LowLimit`/`HighLimit` (and checks their order).
+    fn limits(
+        &mut self,
+        sec: &str,
+        t: DataType,
+    ) -> Result<(Option<Number>, Option<Number>), Error> {
+        let mut out = [None, None];
+        for (slot, name) in out.iter_mut().zip(["LowLimit", "HighLimit"]) {
+            let Some(v) = self.get(sec, name).filter(|v| !v.is_empty()) else {
+                continue;
+            };
+            if !value::has_limits(t) {
+                self.warn(
+                    WarningKind::Tolerated,
+                    sec,
+                    Some(name),
+                    format!("{name} has no meaning for {}: ignored", type_name(t)),
+                )?;
+                continue;
+            }
+            let mut tolerated = Vec::new();
+            let n = value::limit(t, v, self.node_id, &mut tolerated)
+                .map_err(|m| self.err(sec, Some(name), m))?;
+            for note in tolerated {
+                self.warn(WarningKind::Tolerated, sec, Some(name), note)?;
+            }
+            *slot = Some(n);
+        }
+        let [low, high] = out;
+        if let (Some(l), Some(h)) = (low, high) {
+            if l > h {
+                return Err(self.err(
+                    sec,
+                    Some("HighLimit"),
+                    format!("HighLimit {h} is below LowLimit {l}"),
+                ));
+            }
+        }
+        Ok((low, high))
+    }
+
+    /// `InvertedSRAD=0xIIIISS` (CiA 306: index in four hex digits, then
+    /// subindex in two).
+    fn inverted_srad(&mut self, sec: &str) -> Result<Option<(u16, u8, usize)>, Error> {
+        let Some(v) = self.get(sec, "InvertedSRAD").filter(|v| !v.is_empty()) else {
+            return Ok(None);
+        };
+        let v = v.to_string();
+        let line = self
+            .ini
+            .section(sec)
+            .and_then(|s| s.key("InvertedSRAD"))
+            .map_or(0, |k| k.line);
+        let digits = v
+            .strip_prefix("0x")
+            .or_else(|| v.strip_prefix("0X"))
+            .filter(|d| d.len() == 6 && d.chars().all(|c| c.is_ascii_hexdigit()))
+            .ok_or_else(|| {
+                self.err(
+                    sec,
+                    Some("InvertedSRAD"),
+                    format!(
+                        "`{v}`: CiA 306 writes the inverted object as 0x, four hex digits of the index, two of the subindex (0x620102)"
+                    ),
+                )
+            })?;
+        let index = u16::from_str_radix(&digits[..4], 16).unwrap_or(0);
+        let sub = u8::from_str_radix(&digits[4..], 16).unwrap_or(0);
+        Ok(Some((index, sub, line)))
+    }
+}
+
+/// Checks a value against `LowLimit`/`HighLimit`.
+fn in_limits(
+    t: DataType,
+    data: &[u8],
+    (low, high): (Option<Number>, Option<Number>),
+    text: &str,
+) -> Result<(), String> {
+    let Some(v) = value::number(t, data).filter(|_| value::has_limits(t)) else {
+        return Ok(());
+    };
+    let shown = if text.trim().is_empty() {
+        "no value (0)".to_string()
+    } else {
+        format!("`{}` ({v})", text.trim())
+    };
+    if let Some(l) = low.filter(|l| v < *l) {
+        return Err(format!("{shown} is below LowLimit {l}"));
+    }
+    if let Some(h) = high.filter(|h| v > *h) {
+        return Err(format!("{shown} is above HighLimit {h}"));
+    }
+    Ok(())
+}
+
 /// Parses the text of a DCF/EDS (`file` names it in errors).
 pub fn parse(text: &str, file: &Path, node_override: Option<u8>) -> Result<Dcf, Error> {
-    let ctx = Ctx { file, text };
-    let opt = ParseOption {
-        enabled_quote: false,
-        enabled_escape: false,
-        enabled_indented_mutiline_value: false,
-        enabled_preserve_key_leading_whitespace: false,
+    parse_with(
+        text,
+        file,
+        Options {
+            node_id: node_override,
+            strict: false,
+        },
+    )
+}
+
+/// Parses the text of a DCF/EDS with `opts`.
+pub fn parse_with(text: &str, file: &Path, opts: Options) -> Result<Dcf, Error> {
+    let ini = ini::Ini::parse(text).map_err(|e| e.in_file(file))?;
+    let mut r = Reader {
+        file,
+        ini: &ini,
+        opts,
+        node_id: None,
+        warnings: Vec::new(),
     };
-    let ini = Ini::load_from_str_opt(text, opt).map_err(|e| Error {
-        file: file.to_path_buf(),
-        line: Some(e.line + 1),
-        section: None,
-        key: None,
-        msg: e.msg.to_string(),
-    })?;
-    let node_id = match node_override {
+    r.node_id = match opts.node_id {
         Some(n) => Some(n),
-        None => match ini
-            .section(Some("DeviceComissioning"))
-            .and_then(|s| s.get("NodeID"))
-        {
-            Some(v) if !v.trim().is_empty() => {
+        None => match r.get("DeviceComissioning", "NodeID") {
+            Some(v) if !v.is_empty() => {
                 let n = parse_int(v, None)
-                    .map_err(|m| ctx.err("DeviceComissioning", Some("NodeID"), m))?;
+                    .map_err(|m| r.err("DeviceComissioning", Some("NodeID"), m))?;
                 Some(
                     u8::try_from(n)
                         .ok()
                         .filter(|n| (1..=127).contains(n))
                         .ok_or_else(|| {
-                            ctx.err(
+                            r.err(
                                 "DeviceComissioning",
                                 Some("NodeID"),
                                 format!("{n} is not a node-ID (1..127)"),
@@ -319,329 +666,231 @@ pub fn parse(text: &str, file: &Path, node_override: Option<u8>) -> Result<Dcf, 
             _ => None,
         },
     };
+    let safety_supported = r.flag("DeviceInfo", "CANopenSafetySupported")?;
+    // Which section describes each subindex, to refuse a second one.
     let mut objects: BTreeMap<(u16, u8), Object> = BTreeMap::new();
-    let get = |sec: &str, key: &str| {
-        ini.section(Some(sec))
-            .and_then(|s| s.get(key))
-            .map(str::trim)
+    let mut described: BTreeMap<(u16, u8), (String, usize)> = BTreeMap::new();
+    let mut claim = |r: &Reader<'_>, key: (u16, u8), sec: &str| -> Result<(), Error> {
+        let line = ini.section(sec).map_or(0, |s| s.line);
+        if let Some((first, first_line)) = described.get(&key) {
+            return Err(r.err(
+                sec,
+                None,
+                format!(
+                    "0x{:04X} sub {} is already described by [{first}] at line {first_line}: one subindex described twice",
+                    key.0, key.1
+                ),
+            ));
+        }
+        described.insert(key, (sec.to_string(), line));
+        Ok(())
     };
-    let variable = |sec: &str,
-                    index: u16,
-                    sub: u8,
-                    fallback: Option<&str>|
-     -> Result<Object, Error> {
-        let dt_text = get(sec, "DataType").ok_or_else(|| ctx.err(sec, None, "no DataType"))?;
-        let code = parse_int(dt_text, None).map_err(|m| ctx.err(sec, Some("DataType"), m))?;
-        let t = u16::try_from(code)
-            .ok()
-            .and_then(DataType::from_code)
-            .ok_or_else(|| {
-                ctx.err(
-                    sec,
-                    Some("DataType"),
-                    format!("data type {dt_text} is not supported"),
-                )
-            })?;
-        if let Some(nv) = dcf::network_variable(index) {
-            if sub != 0 && nv.typ != t {
-                return Err(ctx.err(
-                    sec,
-                    Some("DataType"),
+    let mut kinds: BTreeMap<u16, i128> = BTreeMap::new();
+    let mut left_out: BTreeSet<u16> = BTreeSet::new();
+    for s in &ini.sections {
+        let name = s.name.as_str();
+        let Some(index) = is_object_section(name) else {
+            continue;
+        };
+        let object_type = match r.get(name, "ObjectType") {
+            Some(v) if !v.is_empty() => {
+                parse_int(v, None).map_err(|m| r.err(name, Some("ObjectType"), m))?
+            }
+            _ => 7,
+        };
+        kinds.insert(index, object_type);
+        if let Some(why) = is_command_object(index) {
+            r.warn(WarningKind::LeftOut, name, None, why)?;
+            left_out.insert(index);
+            continue;
+        }
+        match object_type {
+            2 | 7 => {
+                claim(&r, (index, 0), name)?;
+                if let Some(o) = r.variable(name, index, 0, None)? {
+                    objects.insert((index, 0), o);
+                }
+            }
+            8 | 9 => {
+                let Some(n) = r.get(name, "CompactSubObj").filter(|v| !v.is_empty()) else {
+                    continue;
+                };
+                // CiA 306 compact array: subindices 1..n share the object's
+                // description; values may come from [XXXXValue].
+                let n = parse_int(n, None).map_err(|m| r.err(name, Some("CompactSubObj"), m))?;
+                let n = u8::try_from(n)
+                    .ok()
+                    .filter(|n| *n >= 1 && *n < 255)
+                    .ok_or_else(|| r.err(name, Some("CompactSubObj"), "must be 1..254"))?;
+                claim(&r, (index, 0), name)?;
+                objects.insert(
+                    (index, 0),
+                    Object {
+                        index,
+                        sub: 0,
+                        data_type: DataType::UInt8.code().into(),
+                        access: "ro".into(),
+                        pdo_mapping: false,
+                        data: vec![n],
+                        attr: attr::NUMERIC | attr::READ,
+                        section: name.to_string(),
+                        line: s.line,
+                        value_line: s.line,
+                        limits: (None, None),
+                        srdo_mapping: false,
+                        inverted_srad: None,
+                    },
+                );
+                let values = format!("{index:04X}Value");
+                let (dkey, dvalue) = r.value_key(name);
+                let (dkey, dvalue) = (dkey, dvalue.to_string());
+                for sub in 1..=n {
+                    claim(&r, (index, sub), name)?;
+                    let v = match ini.get(&values, &sub.to_string()) {
+                        Some(v) => ValueAt {
+                            section: values.clone(),
+                            key: sub.to_string(),
+                            text: v,
+                        },
+                        None => ValueAt {
+                            section: name.to_string(),
+                            key: dkey.clone(),
+                            text: &dvalue,
+                        },
+                    };
+                    let Some(o) = r.variable(name, index, sub, Some(v))? else {
+                        // The type is the array's: nothing of it can go in.
+                        objects.remove(&(index, 0));
+                        break;
+                    };
+                    objects.insert((index, sub), o);
+                }
+            }
+            other => {
+                return Err(r.err(
+                    name,
+                    Some("ObjectType"),
                     format!(
-                        "0x{index:04X} holds data type 0x{:04X} (CiA 405 network variables, seed table 2), not {dt_text}",
-                        nv.typ.code()
+                        "object type {other} is not VAR (7), DOMAIN (2), ARRAY (8) or RECORD (9)"
                     ),
                 ));
             }
         }
-        let access = get(sec, "AccessType")
-            .ok_or_else(|| ctx.err(sec, None, "no AccessType"))?
-            .to_ascii_lowercase();
-        if !matches!(
-            access.as_str(),
-            "ro" | "wo" | "rw" | "rwr" | "rww" | "const"
-        ) {
-            return Err(ctx.err(
-                sec,
-                Some("AccessType"),
-                format!("`{access}` is not an access type"),
-            ));
-        }
-        let pdo_mapping = match get(sec, "PDOMapping") {
-            Some(v) if !v.is_empty() => {
-                parse_int(v, None).map_err(|m| ctx.err(sec, Some("PDOMapping"), m))? != 0
-            }
-            _ => false,
-        };
-        let (key, value) = match (get(sec, "ParameterValue"), get(sec, "DefaultValue")) {
-            (Some(v), _) => ("ParameterValue", v),
-            (None, Some(v)) => ("DefaultValue", v),
-            (None, None) => ("DefaultValue", fallback.unwrap_or("")),
-        };
-        let data = encode_value(t, value, node_id).map_err(|m| ctx.err(sec, Some(key), m))?;
-        Ok(Object {
-            index,
-            sub,
-            data_type: t.code().into(),
-            attr: attribute(t, &access, pdo_mapping),
-            access,
-            pdo_mapping,
-            data,
-        })
-    };
-    for name in ini.sections().flatten() {
-        let Some(index) = is_object_section(name) else {
-            continue;
-        };
-        let object_type = match get(name, "ObjectType") {
-            Some(v) if !v.is_empty() => {
-                parse_int(v, None).map_err(|m| ctx.err(name, Some("ObjectType"), m))?
-            }
-            _ => 7,
-        };
-        match object_type {
-            2 | 7 => {
-                let o = variable(name, index, 0, None)?;
-                objects.insert((index, 0), o);
-            }
-            8 | 9 => {
-                if let Some(n) = get(name, "CompactSubObj").filter(|v| !v.is_empty()) {
-                    // CiA 306 compact array: subindices 1..n share the
-                    // object's description; values may come from [XXXXValue].
-                    let n =
-                        parse_int(n, None).map_err(|m| ctx.err(name, Some("CompactSubObj"), m))?;
-                    let n = u8::try_from(n)
-                        .ok()
-                        .filter(|n| *n >= 1 && *n < 255)
-                        .ok_or_else(|| ctx.err(name, Some("CompactSubObj"), "must be 1..254"))?;
-                    let values = format!("{index:04X}Value");
-                    objects.insert(
-                        (index, 0),
-                        Object {
-                            index,
-                            sub: 0,
-                            data_type: DataType::UInt8.code().into(),
-                            access: "ro".into(),
-                            pdo_mapping: false,
-                            data: vec![n],
-                            attr: attr::NUMERIC | attr::READ,
-                        },
-                    );
-                    for s in 1..=n {
-                        let v = get(&values, &s.to_string());
-                        let mut o = variable(name, index, s, None)?;
-                        if let Some(v) = v {
-                            let t = DataType::from_code(o.data_type).unwrap_or(DataType::Domain);
-                            o.data = encode_value(t, v, node_id)
-                                .map_err(|m| ctx.err(&values, Some(&s.to_string()), m))?;
-                        }
-                        objects.insert((index, s), o);
-                    }
-                }
-            }
-            other => {
-                return Err(ctx.err(
-                    name,
-                    Some("ObjectType"),
-                    format!("object type {other} is not VAR, DOMAIN, ARRAY or RECORD"),
-                ));
-            }
-        }
     }
-    for name in ini.sections().flatten() {
+    for s in &ini.sections {
+        let name = s.name.as_str();
         let Some((index, sub)) = is_sub_section(name) else {
             continue;
         };
         let parent = format!("{index:04X}");
-        if ini.section(Some(parent.as_str())).is_none() {
-            return Err(ctx.err(
-                name,
-                None,
-                format!("subindex of [{parent}], which does not exist"),
-            ));
+        match kinds.get(&index) {
+            None => {
+                return Err(r.err(
+                    name,
+                    None,
+                    format!("subindex of [{parent}], which does not exist"),
+                ));
+            }
+            Some(7 | 2) => {
+                return Err(r.err(
+                    name,
+                    None,
+                    format!("[{parent}] is a VAR, which has no subindex sections"),
+                ));
+            }
+            Some(_) => {}
         }
-        let o = variable(name, index, sub, None)?;
-        objects.insert((index, sub), o);
+        if left_out.contains(&index) {
+            continue;
+        }
+        claim(&r, (index, sub), name)?;
+        if let Some(o) = r.variable(name, index, sub, None)? {
+            objects.insert((index, sub), o);
+        }
     }
-    Ok(Dcf {
+    // SubNumber names how many subindex sections follow (CiA 306 4.6.3).
+    for s in &ini.sections {
+        let Some(index) = is_object_section(&s.name) else {
+            continue;
+        };
+        if !matches!(kinds.get(&index), Some(8 | 9)) || s.get("CompactSubObj").is_some() {
+            continue;
+        }
+        let Some(v) = s.get("SubNumber").filter(|v| !v.is_empty()) else {
+            continue;
+        };
+        let Ok(n) = parse_int(v, None) else {
+            return Err(r.err(&s.name, Some("SubNumber"), format!("`{v}` is not a number")));
+        };
+        let have = described.range((index, 0)..=(index, 255)).count() as i128;
+        if n != have && !left_out.contains(&index) {
+            r.warn(
+                WarningKind::Tolerated,
+                &s.name,
+                Some("SubNumber"),
+                format!("{n} subindices announced, {have} sections found"),
+            )?;
+        }
+    }
+    let mut dcf = Dcf {
         file: file.to_path_buf(),
-        node_id,
+        node_id: r.node_id,
         objects: objects.into_values().collect(),
-    })
+        warnings: Vec::new(),
+        safety_supported,
+    };
+    safety::check_keys(&dcf, &mut r)?;
+    dcf.warnings = r.warnings;
+    dcf.warnings.sort_by_key(|w| w.at.line);
+    Ok(dcf)
 }
 
 /// Reads and parses a file.
 pub fn load(path: &Path, node_override: Option<u8>) -> Result<(String, Dcf), Error> {
-    let text = std::fs::read_to_string(path).map_err(|e| Error {
-        file: path.to_path_buf(),
-        line: None,
-        section: None,
-        key: None,
-        msg: e.to_string(),
-    })?;
-    let d = parse(&text, path, node_override)?;
+    load_with(
+        path,
+        Options {
+            node_id: node_override,
+            strict: false,
+        },
+    )
+}
+
+/// Reads and parses a file with `opts`.
+pub fn load_with(path: &Path, opts: Options) -> Result<(String, Dcf), Error> {
+    let bytes = std::fs::read(path).map_err(|e| Error::whole(path, e.to_string()))?;
+    let (text, latin1) = ini::decode(&bytes);
+    let mut d = parse_with(&text, path, opts)?;
+    if latin1 {
+        let w = Warning {
+            kind: WarningKind::Tolerated,
+            at: Error::whole(path, "not UTF-8: read as ISO 8859-1"),
+        };
+        if opts.strict {
+            return Err(w.at);
+        }
+        d.warnings.insert(0, w);
+    }
     Ok((text, d))
 }
 
 impl Dcf {
+    /// The data type of every subindex, for the EDS export of the node
+    /// after the build (`cop::od::eds::EdsInfo::types`).
+    pub fn types(&self) -> Vec<(u16, u8, DataType)> {
+        self.objects
+            .iter()
+            .map(|o| (o.index, o.sub, o.typ()))
+            .collect()
+    }
+
     /// The value of a subindex.
     pub fn get(&self, index: u16, sub: u8) -> Option<&Object> {
         self.objects
-            .iter()
-            .find(|o| o.index == index && o.sub == sub)
+            .binary_search_by_key(&(index, sub), |o| (o.index, o.sub))
+            .ok()
+            .and_then(|i| self.objects.get(i))
     }
-
-    /// The process-image layout of the network variables (seed chapter 6).
-    pub fn layout(&self) -> PiLayout {
-        let mut l = PiLayout::default();
-        for o in &self.objects {
-            l.add(o.index, o.sub);
-        }
-        l
-    }
-
-    /// The entries of the index segment with their attributes.
-    pub fn entries(&self) -> Vec<EntrySpec<'_>> {
-        self.objects
-            .iter()
-            .map(|o| EntrySpec {
-                index: o.index,
-                sub: o.sub,
-                data: &o.data,
-                attr: o.attr,
-            })
-            .collect()
-    }
-
-    /// The address words, one per candidate (`cop::od::dcf::is_pi_candidate`).
-    pub fn addresses(&self) -> Vec<u16> {
-        let layout = self.layout();
-        self.objects
-            .iter()
-            .filter(|o| {
-                let others = self
-                    .objects
-                    .iter()
-                    .any(|x| x.index == o.index && x.sub != o.sub);
-                dcf::is_pi_candidate(o.index, o.sub, others)
-            })
-            .map(|o| match layout.place(o.index, o.sub) {
-                Some((off, _)) => u16::try_from(off).unwrap_or(NOT_PLACED),
-                None => NOT_PLACED,
-            })
-            .collect()
-    }
-
-    /// The process-image parameters, when there are network variables.
-    pub fn pi_params(&self) -> Option<PiParams> {
-        self.objects
-            .iter()
-            .any(|o| dcf::rule_offset(o.index, o.sub).is_some())
-            .then(|| self.layout().params())
-    }
-
-    /// The binary container (all five segments where they have content).
-    pub fn container(&self) -> Result<Vec<u8>, Error> {
-        let entries = self.entries();
-        let addresses = self.addresses();
-        let addr = (!addresses.is_empty()).then_some(addresses.as_slice());
-        let pi = self.pi_params();
-        let whole = |msg: String| Error {
-            file: self.file.clone(),
-            line: None,
-            section: None,
-            key: None,
-            msg,
-        };
-        let n = dcf::encoded_len(&entries, addr, true, pi.as_ref())
-            .ok_or_else(|| whole("container larger than 4 GiB".into()))?;
-        let mut out = vec![0u8; n];
-        dcf::encode(&entries, addr, true, pi.as_ref(), &mut out)
-            .map_err(|e| whole(format!("{e:?}")))?;
-        // What the target will check, checked here first.
-        dcf::Container::parse(&out)
-            .map_err(|e| whole(format!("container does not validate: {e:?}")))?;
-        Ok(out)
-    }
-
-    /// The SRDO configuration CRC (SAFETY_BEHAVIOUR.md section 3,
-    /// CRC-16/XMODEM over direction, SCT, SRVT, COB-ID 1, COB-ID 2, mapping
-    /// count, then subindex and entry of each mapping) of every SRDO the
-    /// file configures: `(number, crc)`, number 1 for 0x1301.
-    pub fn srdo_crcs(&self) -> Result<Vec<(u8, u16)>, Error> {
-        let mut out = Vec::new();
-        for n in 1..=64u8 {
-            let commu = 0x1300 + u16::from(n);
-            let mapp = 0x1380 + u16::from(n);
-            if self.get(commu, 1).is_none() {
-                continue;
-            }
-            let val = |index: u16, sub: u8| -> Result<&[u8], Error> {
-                self.get(index, sub)
-                    .map(|o| o.data.as_slice())
-                    .ok_or_else(|| Error {
-                        file: self.file.clone(),
-                        line: None,
-                        section: Some(format!("{index:04X}sub{sub}")),
-                        key: None,
-                        msg: format!("SRDO {n} needs 0x{index:04X} sub {sub} for its CRC"),
-                    })
-            };
-            let mut stream = Vec::new();
-            for (index, sub) in [
-                (commu, 1),
-                (commu, 2),
-                (commu, 3),
-                (commu, 5),
-                (commu, 6),
-                (mapp, 0),
-            ] {
-                stream.extend_from_slice(val(index, sub)?);
-            }
-            let count = *val(mapp, 0)?.first().unwrap_or(&0);
-            for s in 1..=count {
-                stream.push(s);
-                stream.extend_from_slice(val(mapp, s)?);
-            }
-            out.push((n, cop::srdo::crc::crc16(&stream)));
-        }
-        Ok(out)
-    }
-}
-
-/// Writes `crcs` into the DCF text as the values of 0x13FF sub n
-/// (`ParameterValue` when the section has one or is a DCF, else
-/// `DefaultValue`); every other line stays as it was. The sections must
-/// exist.
-pub fn write_crcs(text: &str, file: &Path, crcs: &[(u8, u16)]) -> Result<String, Error> {
-    let newline = if text.contains("\r\n") { "\r\n" } else { "\n" };
-    let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
-    for (n, crc) in crcs {
-        let section = format!("13FFsub{n:X}");
-        let ctx = Ctx { file, text };
-        let head = locate(text, &section, None).ok_or_else(|| {
-            ctx.err(
-                &section,
-                None,
-                "section missing: add 0x13FF sub n to the DCF",
-            )
-        })?;
-        let value = format!("0x{crc:04X}");
-        let key_line = ["ParameterValue", "DefaultValue"].iter().find_map(|k| {
-            locate(text, &section, Some(k))
-                .filter(|l| *l != head)
-                .map(|l| (k, l))
-        });
-        match key_line {
-            Some((k, l)) => lines[l - 1] = format!("{k}={value}"),
-            None => lines[head - 1].push_str(&format!("{newline}ParameterValue={value}")),
-        }
-    }
-    let mut out = lines.join(newline);
-    if text.ends_with('\n') {
-        out.push_str(newline);
-    }
-    Ok(out)
 }
 
 /// Writes `bytes` to `path` through a temporary file in the same folder

@@ -34,10 +34,14 @@ fn every_dcf_value_reads_back_locally_and_over_sdo() {
     let bus = SimBus::new();
     let (mut dev, mut dev_port) = common::node(&bus, device::od(), 1);
     let (mut cli, mut cli_port) = common::node(&bus, master::od(), 2);
+    let need = dcf2bin::container::pool_need(&container, dev.od(), IMAGE.len()).unwrap();
     let info = device::POOL
         .build(&mut dev, &mut dev_port, bus.now(), &container, Some(&IMAGE))
         .unwrap();
     assert_eq!(Some(info.pi), dcf.pi_params());
+    // The pool figure dcf2bin prints is the pool the build takes.
+    assert_eq!(info.pool_used, need.host());
+    assert_eq!(info.new_subs, need.new_subs);
 
     for o in &dcf.objects {
         if firmware_owned(o.index, o.sub) {

@@ -5,7 +5,7 @@
 #![allow(dead_code)]
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::process::{Command, Output};
 
 use cop::ccm::Stack;
 use cop::od::ObjectDictionary;
@@ -94,7 +94,14 @@ pub fn node(bus: &SimBus, od: ObjectDictionary, id: u8) -> (Stack, SimPort) {
 
 /// The sample DCF of the tests.
 pub fn sample() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/sample.dcf")
+    data("sample.dcf")
+}
+
+/// A file of tests/data.
+pub fn data(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data")
+        .join(name)
 }
 
 /// One subindex as python-canopen read it.
@@ -105,7 +112,8 @@ pub struct PyVar {
     pub data_type: u16,
     pub access: String,
     pub pdo: bool,
-    /// `None` when python-canopen has no value.
+    /// `None` when python-canopen has no value; `ERR` when it cannot
+    /// encode the value it read.
     pub hex: Option<String>,
 }
 
@@ -134,7 +142,11 @@ pub fn python_dump(file: &Path) -> Vec<PyVar> {
                 data_type: u16::from_str_radix(f[2], 16).unwrap(),
                 access: f[3].to_string(),
                 pdo: f[4] == "1",
-                hex: (f[5] != "NONE").then(|| f[5].to_string()),
+                hex: match f[5] {
+                    "NONE" => None,
+                    "-" => Some(String::new()),
+                    s => Some(s.to_string()),
+                },
             }
         })
         .collect()
@@ -151,4 +163,17 @@ pub fn temp_dir(name: &str) -> PathBuf {
 /// Hex digits of bytes, upper case.
 pub fn hex(b: &[u8]) -> String {
     b.iter().map(|x| format!("{x:02X}")).collect()
+}
+
+/// Runs the dcf2bin command line.
+pub fn dcf2bin(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_dcf2bin"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+/// Output bytes as text.
+pub fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
 }
