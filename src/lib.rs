@@ -17,6 +17,10 @@
 //! ([`config`]).
 
 #![cfg_attr(not(any(test, feature = "std")), no_std)]
+// `unsafe` is allowed in two places only, each block with a `SAFETY`
+// comment: `ffi` (the C edge) and `od::table` (the dictionary's table
+// format, whose pointers are the C application's statics). scripts/layers.sh
+// (lint stage) checks which layer imports which.
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
 #![cfg_attr(

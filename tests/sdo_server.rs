@@ -10,7 +10,7 @@ use cop::ccm::Stack;
 use cop::config::{SDOS_BUFFER_SIZE, SDOS_DEFAULT_TIMEOUT};
 use cop::error::{CopKernel, SdoAbort};
 use cop::event::NmtState;
-use cop::ffi::od_table::ObdCbParam;
+use cop::od::table::ObdCbParam;
 use cop::od::{
     Access, ByteOrder, DataType, ObdEntry, ObdSubEntry, ObdVarEntry, ObjectDictionary, decl, event,
 };

@@ -13,11 +13,11 @@ use core::sync::atomic::AtomicU8;
 
 use super::driver::{self, CdrvPort, TgtClock};
 use super::global::{self, Instance};
-use super::od_table::{self, Storage};
+use super::ptr;
 use super::types::*;
 use crate::ccm::{NmtCommand, Stack};
 use crate::error::{CopKernel, CopResult, to_code};
-use crate::od::{ByteOrder, ObjectDictionary};
+use crate::od::{ByteOrder, ObjectDictionary, Storage};
 use crate::port::Clock;
 use crate::wire::emcy::Emergency;
 
@@ -95,10 +95,10 @@ fn init(p: &tCcmInitParam) -> CopResult {
     // 0xFFFF (or NULL for an absent part).
     let (generic, man, dev, usr) = unsafe {
         (
-            od_table::c_table(ram.m_pGenericPart),
-            od_table::c_table(ram.m_pManufacturerPart),
-            od_table::c_table(ram.m_pDevicePart),
-            od_table::c_table(ram.m_pUserPart),
+            ptr::c_table(ram.m_pGenericPart),
+            ptr::c_table(ram.m_pManufacturerPart),
+            ptr::c_table(ram.m_pDevicePart),
+            ptr::c_table(ram.m_pUserPart),
         )
     };
     let mut od = ObjectDictionary::new(generic, man, dev).map_err(|e| e.code)?;

@@ -8,11 +8,11 @@ pub mod driver;
 pub mod dynod;
 pub mod global;
 pub mod master;
-pub mod od_table;
 
 #[cfg(test)]
 mod od_callback_tests;
 pub mod pdo;
+mod ptr;
 pub mod services;
 pub mod srdo;
 pub mod stack_callbacks;

@@ -6,7 +6,7 @@ use core::sync::atomic::AtomicU8;
 use std::sync::Mutex;
 
 use crate::error::{CopKernel, OdError};
-use crate::ffi::od_table::{ObdCbParam, ObdVStringDomain};
+use crate::od::table::{ObdCbParam, ObdVStringDomain};
 use crate::od::{
     Access, ByteOrder, DataType, NoHooks, ObdEntry, ObdSize, ObdSubEntry, ObdVarEntry,
     ObjectDictionary, decl, event,

@@ -3,7 +3,7 @@
 //!
 //! The tables come from the application's `objdict.h` (through
 //! `include/objdef.h`), from Rust code, or from the dynamic OD; all use the
-//! format of [`crate::ffi::od_table`]. Lookup is a binary search over the
+//! format of [`table`]. Lookup is a binary search over the
 //! sorted part tables (O(log n)); unsorted tables are refused when the
 //! dictionary is created.
 //!
@@ -16,14 +16,16 @@ pub mod dcf;
 pub mod decl;
 pub mod dynamic;
 pub mod eds;
+// The table format shared with C: raw pointers into the application's
+// statics, the one place of the core that needs `unsafe`.
+#[allow(unsafe_code)]
+pub mod table;
 mod types;
 pub mod value;
 
 pub use types::{Access, DataType, Encoding};
 
-pub use crate::ffi::od_table::{
-    CbArg, ObdCallback, ObdEntry, ObdSize, ObdSubEntry, ObdVarEntry, Storage, kind,
-};
+pub use table::{CbArg, ObdCallback, ObdEntry, ObdSize, ObdSubEntry, ObdVarEntry, Storage, kind};
 
 use core::sync::atomic::AtomicU8;
 use core::sync::atomic::Ordering::Relaxed;
