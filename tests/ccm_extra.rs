@@ -359,7 +359,7 @@ fn emergency_consumer_table_codes() {
     let mut net = Net::new();
     let Net { b, .. } = &mut net;
     let (stack, port) = (&mut b.stack, &mut b.port);
-    let too_many: Vec<u8> = (10..10 + cop::emcc::CAPACITY as u8 + 1).collect();
+    let too_many: Vec<u8> = (10..10 + cop::emcy::consumer::CAPACITY as u8 + 1).collect();
     assert_eq!(
         stack.define_emcc_producers(port, &too_many),
         Err(CopKernel::EmccNoFreeProducerEntry)
@@ -378,7 +378,7 @@ fn emergency_consumer_table_codes() {
         Err(CopKernel::EmccNodeIdExist)
     );
     assert_eq!(stack.emcc().producers().count(), 0);
-    let full: Vec<u8> = (10..10 + cop::emcc::CAPACITY as u8).collect();
+    let full: Vec<u8> = (10..10 + cop::emcy::consumer::CAPACITY as u8).collect();
     stack.define_emcc_producers(port, &full).unwrap();
     assert_eq!(stack.emcc().producers().collect::<Vec<_>>(), full);
     // The same table again (every reset communication) is fine.

@@ -289,7 +289,7 @@ pub unsafe extern "C" fn CcmHbcDefineProducerTab(
             let v = (u32::from(p.bProducerNodeId_p) << 16) | u32::from(p.wHeartbeatTime_p);
             i.stack
                 .write_object(
-                    crate::hbc::CONSUMER_TIME_INDEX,
+                    crate::heartbeat::CONSUMER_TIME_INDEX,
                     p.bSubindex_p,
                     crate::od::ByteOrder::Wire,
                     &v.to_le_bytes(),

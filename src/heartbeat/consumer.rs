@@ -1,4 +1,4 @@
-//! Heartbeat consumer (object 0x1016, CiA 301 7.2.8.3.2.2).
+//! Heartbeat consumer (SYS TEC HBC, object 0x1016, CiA 301 7.2.8.3.2.2).
 //!
 //! Each entry of 0x1016 holds `node-ID << 16 | heartbeat time (ms)`; an
 //! entry with node-ID 0 or time 0 is unused. Supervision of a node starts

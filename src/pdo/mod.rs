@@ -51,7 +51,7 @@
 //!   EMCY producer does with 0x80.
 //! * The SYNC consumer is always active with the COB-ID of 0x1005 (0x80
 //!   when the dictionary has no 0x1005). With bit 30 set this node is the
-//!   SYNC producer ([`crate::syncp`]); the stack passes each SYNC it sends
+//!   SYNC producer ([`crate::sync`]); the stack passes each SYNC it sends
 //!   to this module, which treats it like a received one.
 //! * The SYNC counter byte (DLC 1) is accepted and not evaluated: the
 //!   parameter objects end at sub 5, so there is no SYNC start value;
@@ -68,13 +68,13 @@
 //!   `CcmDefineStaticPdoTab`) survive NMT resets; the dictionary values are
 //!   restored to their defaults as CiA 301 requires.
 
-mod api;
 pub mod decl;
 pub mod mapping;
+mod param;
 #[cfg(test)]
 mod tests;
 
-pub use api::{PdoParam, StaticPdoParam};
+pub use param::{PdoParam, StaticPdoParam};
 
 use core::sync::atomic::{AtomicU8, Ordering};
 
@@ -888,7 +888,7 @@ impl Pdo {
     /// count it. The work that may send frames or queue events is done in
     /// [`Pdo::poll`] so that one received frame never queues more than one
     /// event.
-    fn on_sync(&mut self, at: Ticks) {
+    pub(crate) fn on_sync(&mut self, at: Ticks) {
         self.wake();
         self.sync.last = Some(at);
         for ch in self.rx.iter_mut() {
@@ -1307,7 +1307,10 @@ fn send_emcy(
     dlc: u8,
 ) {
     // Error register: generic error (bit 0) and communication error (bit 4).
-    let register = od.read_uint(emcy::ERROR_REGISTER_INDEX, 0).unwrap_or(0) as u8 | 0x11;
+    let register = od
+        .read_uint(emcy::producer::ERROR_REGISTER_INDEX, 0)
+        .unwrap_or(0) as u8
+        | 0x11;
     let i = commu.to_le_bytes();
     let e = Emergency {
         code,
