@@ -637,7 +637,7 @@ pub unsafe extern "C" fn DynBuildOd(
             // SAFETY: the caller hands the image for the lifetime of the
             // dynamic OD (documented above).
             Some(unsafe {
-                super::ccm::static_bytes(
+                super::ptr::static_bytes(
                     d.m_pbProcessImage as *mut c_void,
                     d.m_dwProcessImageSize as usize,
                 )

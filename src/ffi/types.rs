@@ -154,6 +154,11 @@ pub type tAppHbcEventCallback =
 pub type tAppEmccEventCallback =
     Option<unsafe extern "C" fn(bNodeId_p: BYTE, pEmcParam_p: *mut tEmcParam) -> tCopKernel>;
 
+/// `tPdoCallback` (single-instance form): called with the communication
+/// index after an RPDO's data reached its variables or after a TPDO was
+/// sent.
+pub type tPdoCallback = Option<unsafe extern "C" fn(wPdoCommuIndex_p: WORD) -> tCopKernel>;
+
 /// `tObdPart`: `kObdPart*` bits.
 pub type tObdPart = tFastByte;
 
