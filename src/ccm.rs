@@ -107,6 +107,9 @@ pub struct Stack {
 }
 
 /// The module reactions to dictionary writes.
+///
+/// Made with [`hooks!`], which borrows the modules field by field, so that
+/// the dictionary and the SDO server stay usable beside them.
 struct Hooks<'a> {
     state: NmtState,
     node: u8,
@@ -120,6 +123,26 @@ struct Hooks<'a> {
     syncp: &'a mut SyncProducer,
     store: &'a mut StoreRestore,
     sdo_changed: bool,
+}
+
+/// The [`Hooks`] of a stack (`$stack`) at `$now`.
+macro_rules! hooks {
+    ($stack:expr, $now:expr) => {
+        Hooks {
+            state: $stack.state,
+            node: $stack.node_id,
+            now: $now,
+            srdo: &mut $stack.srdo,
+            pdo: &mut $stack.pdo,
+            hb: &mut $stack.hb,
+            hbc: &mut $stack.hbc,
+            emcy: &mut $stack.emcy,
+            lgs: &mut $stack.lgs,
+            syncp: &mut $stack.syncp,
+            store: &mut $stack.store,
+            sdo_changed: false,
+        }
+    };
 }
 
 impl WriteHooks for Hooks<'_> {
@@ -574,20 +597,7 @@ impl Stack {
             return;
         }
         if Some(f.id) == self.sdo.rx_id() {
-            let mut hooks = Hooks {
-                state: self.state,
-                node: self.node_id,
-                now,
-                srdo: &mut self.srdo,
-                pdo: &mut self.pdo,
-                hb: &mut self.hb,
-                hbc: &mut self.hbc,
-                emcy: &mut self.emcy,
-                lgs: &mut self.lgs,
-                syncp: &mut self.syncp,
-                store: &mut self.store,
-                sdo_changed: false,
-            };
+            let mut hooks = hooks!(self, now);
             let reply = self.sdo.on_frame(&self.od, &mut hooks, f, now);
             let changed = hooks.sdo_changed;
             if let Some(r) = reply {
@@ -652,15 +662,7 @@ impl Stack {
                 self.syncp.reset_communication();
             }
             Internal::Reconfigure => {
-                self.reconfigure_services(now);
-                self.hb.reconfigure(&self.od, now);
-                self.hbc.reconfigure(&self.od);
-                self.emcy.reconfigure(&self.od, self.node_id);
-                self.sdo.reconfigure(&self.od, self.node_id);
-                self.sdoc.reconfigure(&self.od);
-                self.subscribe(port);
-                self.srdo.reconfigure(&self.od, port);
-                self.pdo.reconfigure(&self.od, self.node_id, port);
+                self.reconfigure_modules(port, now);
                 if self.connected && self.state == NmtState::Initialisation {
                     self.queue_state(NmtState::PreOperational);
                 }
@@ -694,15 +696,7 @@ impl Stack {
     /// dynamic OD was built, rolled back or destroyed. PDOs keep running
     /// when the node is OPERATIONAL.
     pub fn reload_configuration(&mut self, port: &mut impl CanPort, now: Ticks) {
-        self.reconfigure_services(now);
-        self.hb.reconfigure(&self.od, now);
-        self.hbc.reconfigure(&self.od);
-        self.emcy.reconfigure(&self.od, self.node_id);
-        self.sdo.reconfigure(&self.od, self.node_id);
-        self.sdoc.reconfigure(&self.od);
-        self.subscribe(port);
-        self.srdo.reconfigure(&self.od, port);
-        self.pdo.reconfigure(&self.od, self.node_id, port);
+        self.reconfigure_modules(port, now);
         self.pdo.on_state(self.state, now);
     }
 
@@ -725,6 +719,14 @@ impl Stack {
         let _ = self.od.set_user_part(original_user);
         self.od.restore_defaults(0x1400, 0x1BFF);
         self.sdo.cancel();
+        self.reconfigure_modules(port, now);
+        self.pdo.on_state(NmtState::PreOperational, now);
+    }
+
+    /// Lets every module take over its parameters from the dictionary and
+    /// tells the driver the identifiers (after reset communication, and
+    /// after a dynamic OD changed the dictionary).
+    fn reconfigure_modules(&mut self, port: &mut impl CanPort, now: Ticks) {
         self.reconfigure_services(now);
         self.hb.reconfigure(&self.od, now);
         self.hbc.reconfigure(&self.od);
@@ -734,7 +736,6 @@ impl Stack {
         self.subscribe(port);
         self.srdo.reconfigure(&self.od, port);
         self.pdo.reconfigure(&self.od, self.node_id, port);
-        self.pdo.on_state(NmtState::PreOperational, now);
     }
 
     /// Tells the driver which identifiers to receive (`CdrvDefineCanId`):
@@ -807,20 +808,7 @@ impl Stack {
         data: &[u8],
         now: Ticks,
     ) -> Result<(), OdError> {
-        let mut hooks = Hooks {
-            state: self.state,
-            node: self.node_id,
-            now,
-            srdo: &mut self.srdo,
-            pdo: &mut self.pdo,
-            hb: &mut self.hb,
-            hbc: &mut self.hbc,
-            emcy: &mut self.emcy,
-            lgs: &mut self.lgs,
-            syncp: &mut self.syncp,
-            store: &mut self.store,
-            sdo_changed: false,
-        };
+        let mut hooks = hooks!(self, now);
         let r = self.od.write(index, sub, order, data, &mut hooks);
         if hooks.sdo_changed {
             self.sdo.reconfigure(&self.od, self.node_id);
