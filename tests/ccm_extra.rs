@@ -20,8 +20,6 @@ use cop::ccm::{NmtCommand, Stack};
 use cop::error::{CopKernel, OdError, SdoAbort};
 use cop::event::{ErrCtrlEvent, Event, NmtState};
 use cop::od::{Access, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
-use cop::pdo::PDO_MAX_MAPPENTRIES;
-use cop::pdo::decl::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
 use cop::port::{CanFrame, CanId};
 use cop::sim::SimBus;
 use cop::store::{self, part};
@@ -31,36 +29,11 @@ use cop::wire::time::TimeOfDay;
 /// TPDO 1 (0x180, type 1 = every SYNC) mapping 0x2000 (U8), and 0x2000.
 macro_rules! sync_tpdo {
     () => {
-        static V1800: CommuVars = CommuVars::new();
-        static D1800: CommuDefaults = CommuDefaults::new(0x180, 1, 0, 0);
-        static S1800: [ObdSubEntry; 5] = commu_subs(&V1800, &D1800);
-        static V1A00: MappVars = MappVars::new();
-        static D1A00: MappDefaults = MappDefaults::new(&[0x2000_0008]);
-        static S1A00: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1A00, &D1A00);
-        static V2000: [AtomicU8; 1] = decl::zeroed();
-        static S2000: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-            0,
-            DataType::UInt8,
-            Access::PRW,
-            &V2000,
-            Some(&[0]),
-        )];
-        static ERR_REG: [AtomicU8; 1] = decl::zeroed();
-        static S1001: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-            0,
-            DataType::UInt8,
-            Access::R,
-            &ERR_REG,
-            Some(&[0]),
-        )];
-        static HB: [AtomicU8; 2] = decl::zeroed();
-        static S1017: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-            0,
-            DataType::UInt16,
-            Access::SRW,
-            &HB,
-            Some(&[0, 0]),
-        )];
+        cop::pdo_commu!(static S1800, V1800 = 0x180, 1, 0, 0);
+        cop::pdo_mapp!(static S1A00, V1A00 = [0x2000_0008]);
+        cop::od_ram!(static S2000, V2000: u8 = 0 => UInt8, PRW);
+        cop::od_ram!(static S1001, ERR_REG: u8 = 0 => UInt8, R);
+        cop::od_ram!(static S1017, HB: u16 = 0 => UInt16, SRW);
     };
 }
 
@@ -78,39 +51,10 @@ mod node_a {
         ObdSubEntry::ram(3, DataType::UInt32, Access::R, &ERRORS[2], Some(&[0; 4])),
         ObdSubEntry::ram(4, DataType::UInt32, Access::R, &ERRORS[3], Some(&[0; 4])),
     ];
-    static SYNC_COB: [AtomicU8; 4] = decl::zeroed();
-    static SYNC_COB_DEF: [u8; 4] = 0x80u32.to_ne_bytes();
-    static S1005: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt32,
-        Access::SRW,
-        &SYNC_COB,
-        Some(&SYNC_COB_DEF),
-    )];
-    static CYCLE: [AtomicU8; 4] = decl::zeroed();
-    static S1006: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt32,
-        Access::SRW,
-        &CYCLE,
-        Some(&[0; 4]),
-    )];
-    static GUARD: [AtomicU8; 2] = decl::zeroed();
-    static S100C: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt16,
-        Access::SRW,
-        &GUARD,
-        Some(&[0; 2]),
-    )];
-    static FACTOR: [AtomicU8; 1] = decl::zeroed();
-    static S100D: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt8,
-        Access::SRW,
-        &FACTOR,
-        Some(&[0]),
-    )];
+    cop::od_ram!(static S1005, SYNC_COB: u32 = 0x80 => UInt32, SRW);
+    cop::od_ram!(static S1006, CYCLE: u32 = 0 => UInt32, SRW);
+    cop::od_ram!(static S100C, GUARD: u16 = 0 => UInt16, SRW);
+    cop::od_ram!(static S100D, FACTOR: u8 = 0 => UInt8, SRW);
     // 0x1010 / 0x1011 as typical objdict.h files declare them: "saves on
     // command" / "restores" (1) as defaults.
     static ONE: [u8; 4] = 1u32.to_ne_bytes();
@@ -128,15 +72,7 @@ mod node_a {
         ObdSubEntry::ram(2, DataType::UInt32, Access::RW, &LOAD[1], Some(&ONE)),
         ObdSubEntry::ram(3, DataType::UInt32, Access::RW, &LOAD[2], Some(&ONE)),
     ];
-    static EMCY_COB: [AtomicU8; 4] = decl::zeroed();
-    static EMCY_COB_DEF: [u8; 4] = 0x80u32.to_ne_bytes();
-    static S1014: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt32,
-        Access::SRW,
-        &EMCY_COB,
-        Some(&EMCY_COB_DEF),
-    )];
+    cop::od_ram!(static S1014, EMCY_COB: u32 = 0x80 => UInt32, SRW);
 
     static GENERIC: [ObdEntry; 12] = [
         ObdEntry::new(0x1001, &S1001, None),

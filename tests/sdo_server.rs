@@ -89,22 +89,8 @@ unsafe extern "C" fn refusing_callback(param: *mut ObdCbParam) -> u32 {
 /// | 0x6401 | analogue inputs, array of 2 I16, read-only, 0x6401.1 = 0x1234 |
 macro_rules! test_od {
     () => {{
-        static DEVICE_TYPE: [u8; 4] = 0x0000_0191u32.to_ne_bytes();
-        static S1000: [ObdSubEntry; 1] = [ObdSubEntry::rom(
-            0,
-            DataType::UInt32,
-            Access::R,
-            &DEVICE_TYPE,
-        )];
-        static HB: [AtomicU8; 2] = decl::zeroed();
-        static HB_DEF: [u8; 2] = 0u16.to_ne_bytes();
-        static S1017: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-            0,
-            DataType::UInt16,
-            Access::SRW,
-            &HB,
-            Some(&HB_DEF),
-        )];
+        cop::od_rom!(static S1000: u32 = 0x0000_0191 => UInt32, R);
+        cop::od_ram!(static S1017, HB: u16 = 0 => UInt16, SRW);
         static ID_COUNT: [u8; 1] = [4];
         static VENDOR: [u8; 4] = 0x0000_0147u32.to_ne_bytes();
         static PRODUCT: [u8; 4] = 0x0000_1234u32.to_ne_bytes();
@@ -1014,13 +1000,7 @@ macro_rules! od_with_1200 {
             ObdSubEntry::ram(1, DataType::UInt32, Access::RW, &RX, Some(&RX_DEF)),
             ObdSubEntry::ram(2, DataType::UInt32, Access::RW, &TX, Some(&TX_DEF)),
         ];
-        static DEVICE_TYPE: [u8; 4] = 0x0000_0191u32.to_ne_bytes();
-        static S1000: [ObdSubEntry; 1] = [ObdSubEntry::rom(
-            0,
-            DataType::UInt32,
-            Access::R,
-            &DEVICE_TYPE,
-        )];
+        cop::od_rom!(static S1000: u32 = 0x0000_0191 => UInt32, R);
         static GENERIC: [ObdEntry; 2] = [
             ObdEntry::new(0x1000, &S1000, None),
             ObdEntry::new(0x1200, &S1200, None),
