@@ -15,13 +15,12 @@ mod common;
 
 use core::sync::atomic::AtomicU8;
 
-use common::Node;
+use common::{Net, Node};
 use cop::ccm::{NmtCommand, Stack};
 use cop::error::{CopKernel, OdError, SdoAbort};
 use cop::event::{ErrCtrlEvent, Event, NmtState};
 use cop::od::{Access, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
 use cop::port::{CanFrame, CanId};
-use cop::sim::SimBus;
 use cop::store::{self, part};
 use cop::wire::emcy::{self, Emergency};
 use cop::wire::time::TimeOfDay;
@@ -132,67 +131,21 @@ impl Node {
     }
 
     fn take_emcc(&mut self) -> Vec<(u8, Emergency)> {
-        let v = self
-            .events
-            .iter()
-            .filter_map(|e| match e {
-                Event::Emcc(n, em) => Some((*n, *em)),
-                _ => None,
-            })
-            .collect();
-        self.events.clear();
-        v
+        self.take(|e| match e {
+            Event::Emcc(n, em) => Some((*n, *em)),
+            _ => None,
+        })
     }
-}
-
-struct Net {
-    bus: SimBus,
-    a: Node,
-    b: Node,
-    _guard: std::sync::MutexGuard<'static, ()>,
 }
 
 impl Net {
-    /// Both nodes PRE-OPERATIONAL, trace empty.
+    /// Both nodes PRE-OPERATIONAL, trace and events empty.
     fn new() -> Net {
-        let guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
-        let bus = SimBus::new();
-        let a = Node::new(&bus, node_a::od(), ID_A);
-        let b = Node::new(&bus, node_b::od(), ID_B);
-        bus.clear_trace();
-        let mut net = Net {
-            bus,
-            a,
-            b,
-            _guard: guard,
-        };
+        let mut net = Net::pair(&SERIAL, (node_a::od(), ID_A), (node_b::od(), ID_B));
+        net.bus.clear_trace();
         net.a.events.clear();
         net.b.events.clear();
         net
-    }
-
-    /// Advances the bus by `ms` milliseconds, one cycle per node and ms.
-    fn run(&mut self, ms: u32) {
-        for _ in 0..ms {
-            self.bus.advance_ms(1);
-            self.step();
-        }
-    }
-
-    /// One cycle per node without advancing the time.
-    fn step(&mut self) {
-        self.a.cycle();
-        self.b.cycle();
-    }
-
-    /// (time, payload) of every data frame with identifier `id` so far.
-    fn frames(&self, id: u32) -> Vec<(u32, Vec<u8>)> {
-        self.bus
-            .sent()
-            .into_iter()
-            .filter(|(_, _, f)| f.id.id() == id && !f.rtr)
-            .map(|(_, t, f)| (t.0, f.payload().to_vec()))
-            .collect()
     }
 
     /// An NMT master's guard request to `node`.
@@ -383,31 +336,38 @@ fn emcy_frames(net: &Net, node: u8) -> Vec<Vec<u8>> {
         .collect()
 }
 
-/// With `NMTS_USE_LIFEGUARDING` FALSE (`COP_NMTS_USE_LIFEGUARDING=0`)
-/// `CcmInitLgs` does not exist in C and the module never acts.
-fn life_guarding_built_in(net: &mut Net) -> bool {
-    if cop::config::NMTS_USE_LIFEGUARDING {
-        return true;
+impl Node {
+    /// `CcmInitLgs`, then `CcmConfigLgs(guard_ms, factor)`.
+    fn guard_lifetime(&mut self, guard_ms: u16, factor: u8) {
+        self.stack.init_lgs();
+        let now = self.now();
+        self.stack.config_lgs(guard_ms, factor, now).unwrap();
     }
-    net.a.stack.init_lgs();
+}
+
+/// A network for the life guarding tests, or `None` when
+/// `NMTS_USE_LIFEGUARDING` is FALSE (`COP_NMTS_USE_LIFEGUARDING=0`): then
+/// `CcmInitLgs` does not exist in C and the module never acts, which is
+/// checked here instead.
+fn life_guarding_net() -> Option<Net> {
+    let mut net = Net::new();
+    if cop::config::NMTS_USE_LIFEGUARDING {
+        return Some(net);
+    }
+    net.a.guard_lifetime(10, 2);
     assert!(!net.a.stack.lgs().is_initialised());
-    let now = net.a.now();
-    net.a.stack.config_lgs(10, 2, now).unwrap();
     net.guard(ID_A);
     net.run(100);
-    assert!(emcy_frames(net, ID_A).is_empty());
-    false
+    assert!(emcy_frames(&net, ID_A).is_empty());
+    None
 }
 
 #[test]
 fn life_guarding_reports_a_lost_master_once_per_loss() {
-    let mut net = Net::new();
-    if !life_guarding_built_in(&mut net) {
+    let Some(mut net) = life_guarding_net() else {
         return;
-    }
-    net.a.stack.init_lgs();
-    let now = net.a.now();
-    net.a.stack.config_lgs(100, 3, now).unwrap();
+    };
+    net.a.guard_lifetime(100, 3);
     assert_eq!((net.a.read(0x100C, 0), net.a.read(0x100D, 0)), (100, 3));
     assert_eq!(net.a.stack.lgs().life_time_ticks(), 3000);
 
@@ -451,13 +411,10 @@ fn life_guarding_reports_a_lost_master_once_per_loss() {
 
 #[test]
 fn life_guarding_in_stopped_is_recorded_not_sent() {
-    let mut net = Net::new();
-    if !life_guarding_built_in(&mut net) {
+    let Some(mut net) = life_guarding_net() else {
         return;
-    }
-    net.a.stack.init_lgs();
-    let now = net.a.now();
-    net.a.stack.config_lgs(10, 2, now).unwrap();
+    };
+    net.a.guard_lifetime(10, 2);
     net.a.command(NmtCommand::StopRemoteNode);
     net.guard(ID_A);
     // Guarding is served in STOPPED: state 0x04.
@@ -474,10 +431,9 @@ fn life_guarding_in_stopped_is_recorded_not_sent() {
 
 #[test]
 fn life_guarding_and_heartbeat_exclude_each_other() {
-    let mut net = Net::new();
-    if !life_guarding_built_in(&mut net) {
+    let Some(mut net) = life_guarding_net() else {
         return;
-    }
+    };
     let now = net.a.now();
     // Before CcmInitLgs life guarding is not configured.
     net.a.stack.config_lgs(100, 3, now).unwrap();
@@ -521,13 +477,10 @@ fn life_guarding_and_heartbeat_exclude_each_other() {
 
 #[test]
 fn life_guarding_without_objects_keeps_its_values_until_reset_communication() {
-    let mut net = Net::new();
-    if !life_guarding_built_in(&mut net) {
+    let Some(mut net) = life_guarding_net() else {
         return;
-    }
-    net.b.stack.init_lgs();
-    let now = net.b.now();
-    net.b.stack.config_lgs(50, 2, now).unwrap();
+    };
+    net.b.guard_lifetime(50, 2);
     assert_eq!(net.b.stack.lgs().config(), (50, 2));
     net.guard(ID_B);
     net.run(100);

@@ -10,7 +10,7 @@ mod common;
 
 use core::sync::atomic::AtomicU8;
 
-use common::Node;
+use common::{Net, Node};
 use cop::ccm::{NmtCommand, Stack};
 use cop::error::{CopKernel, OdError};
 use cop::event::{Event, NmtEvent, NmtState};
@@ -148,40 +148,18 @@ impl Node {
     }
 
     fn pdo_events(&mut self) -> Vec<u16> {
-        let v = self
-            .events
-            .iter()
-            .filter_map(|e| match e {
-                Event::Pdo(i) => Some(*i),
-                _ => None,
-            })
-            .collect();
-        self.events.clear();
-        v
+        self.take(|e| match e {
+            Event::Pdo(i) => Some(*i),
+            _ => None,
+        })
     }
-}
-
-struct Net {
-    bus: SimBus,
-    a: Node,
-    b: Node,
-    _guard: std::sync::MutexGuard<'static, ()>,
 }
 
 impl Net {
     /// Both nodes PRE-OPERATIONAL, A's TPDO 1 (0x181, type 255, inputs
     /// 1..3) and B's RPDO 1 (0x181, outputs 1..3) linked, trace empty.
     fn new() -> Net {
-        let guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
-        let bus = SimBus::new();
-        let a = Node::new(&bus, node_a::od(), 1);
-        let b = Node::new(&bus, node_b::od(), 2);
-        let mut net = Net {
-            bus,
-            a,
-            b,
-            _guard: guard,
-        };
+        let mut net = Net::pair(&SERIAL, (node_a::od(), 1), (node_b::od(), 2));
         // Predefined connection set: TPDO 1 of node 1 is 0x181.
         assert_eq!(net.a.read(0x1800, 1), 0x181);
         net.b.write(0x1400, 1, 0x181, 4).unwrap();
@@ -197,34 +175,9 @@ impl Net {
         self.b.events.clear();
     }
 
-    /// Advances the bus by `ms` milliseconds, one cycle per node and ms.
-    fn run(&mut self, ms: u32) {
-        for _ in 0..ms {
-            self.bus.advance_ms(1);
-            self.a.cycle();
-            self.b.cycle();
-        }
-    }
-
-    /// One cycle per node without advancing the time.
-    fn step(&mut self) {
-        self.a.cycle();
-        self.b.cycle();
-    }
-
     fn sync(&mut self) {
         self.bus.inject(encode_sync(CanId::std_masked(0x80), None));
         self.step();
-    }
-
-    /// (time, payload) of every frame with identifier `id` so far.
-    fn frames(&self, id: u32) -> Vec<(u32, Vec<u8>)> {
-        self.bus
-            .sent()
-            .into_iter()
-            .filter(|(_, _, f)| f.id.id() == id && !f.rtr)
-            .map(|(_, t, f)| (t.0, f.payload().to_vec()))
-            .collect()
     }
 }
 
