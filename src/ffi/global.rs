@@ -202,6 +202,16 @@ pub fn pump(mut next: impl FnMut(&mut Instance, crate::port::Ticks) -> Option<Ev
     not_handled
 }
 
+/// Hands one event to the application ([`callbacks::dispatch`]) and
+/// reports a refusal through the error callback. One call per event, out of
+/// line, so that the pump of every API function stays small.
+#[inline(never)]
+fn deliver(e: Event, cbs: Callbacks) {
+    if let Some(code) = callbacks::dispatch(e, cbs, current()) {
+        report_error(code);
+    }
+}
+
 fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Option<Event>) -> bool {
     let mut not_handled = false;
     loop {
@@ -210,9 +220,7 @@ fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Optio
         match step {
             Ok(Some((e, cbs))) => {
                 not_handled |= matches!(e, Event::SrdoError(_, CopKernel::SrdoNotHandledInApp));
-                if let Some(code) = callbacks::dispatch(e, cbs, current()) {
-                    report_error(code);
-                }
+                deliver(e, cbs);
             }
             _ => break,
         }

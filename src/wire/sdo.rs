@@ -543,6 +543,7 @@ enum SenderBlock {
 }
 
 impl SenderBlock {
+    #[inline(always)]
     fn encode(self, cs: u8) -> [u8; FRAME_LEN] {
         match self {
             SenderBlock::Initiate { mux, crc, size } => block_initiate(cs, mux, crc, size),
@@ -550,6 +551,7 @@ impl SenderBlock {
         }
     }
 
+    #[inline(always)]
     fn decode(data: &[u8; FRAME_LEN]) -> Self {
         if data[0] & 0x01 == BLOCK_END {
             SenderBlock::End {
@@ -588,6 +590,7 @@ enum ReceiverBlock {
 }
 
 impl ReceiverBlock {
+    #[inline(always)]
     fn encode(self, cs: u8) -> [u8; FRAME_LEN] {
         let mut out = [0u8; FRAME_LEN];
         match self {
@@ -609,6 +612,7 @@ impl ReceiverBlock {
         out
     }
 
+    #[inline(always)]
     fn decode(data: &[u8; FRAME_LEN]) -> Self {
         match data[0] & 0x03 {
             BLOCK_INITIATE => ReceiverBlock::Initiate {
