@@ -26,37 +26,15 @@ static S1018: [ObdSubEntry; 5] = [
     ObdSubEntry::rom(4, DataType::UInt32, Access::R, &ID_SERIAL),
 ];
 
-static V2001: [AtomicU8; 2] = decl::zeroed();
-static L2001: [u8; 6] = {
-    let d = 0i16.to_ne_bytes();
-    let l = (-100i16).to_ne_bytes();
-    let h = 100i16.to_ne_bytes();
-    [d[0], d[1], l[0], l[1], h[0], h[1]]
-};
 static V2003: [AtomicU8; 65] = decl::zeroed();
 static V2005: [AtomicU8; 4] = decl::zeroed();
 static E2005: ObdVarEntry = ObdVarEntry::new();
 static V2006: [AtomicU8; 300] = decl::zeroed();
 static E2006: ObdVarEntry = ObdVarEntry::new();
 static V2007: [AtomicU8; 8] = decl::zeroed();
-static V2009: [AtomicU8; 4] = decl::zeroed();
-static L2009: [u8; 12] = {
-    let d = 0.0f32.to_ne_bytes();
-    let l = (-1.0f32).to_ne_bytes();
-    let h = 1.0f32.to_ne_bytes();
-    [
-        d[0], d[1], d[2], d[3], l[0], l[1], l[2], l[3], h[0], h[1], h[2], h[3],
-    ]
-};
 
 crate::od_ram!(static S2000, V2000: u8 = 0 => UInt8, PRW);
-static S2001: [ObdSubEntry; 1] = [ObdSubEntry::ram_range(
-    0,
-    DataType::Int16,
-    Access::PRW,
-    &V2001,
-    &L2001,
-)];
+crate::od_ram!(static S2001, V2001: i16 = 0 => Int16, PRW, range(-100, 100));
 crate::od_ram!(static S2002, V2002: u32 => UInt32, PRW);
 static S2003: [ObdSubEntry; 1] = [ObdSubEntry::ram_string(0, Access::RW, &V2003, c"hello")];
 static S2004: [ObdSubEntry; 1] = [ObdSubEntry::rom_string(0, Access::R, b"constant text")];
@@ -81,13 +59,7 @@ static S2007: [ObdSubEntry; 2] = [
     ObdSubEntry::ram_array(1, DataType::UInt8, Access::PRW, &V2007, 1, Some(&[0])),
 ];
 crate::od_ram!(static S2008, V2008: u64 => UInt64, RW);
-static S2009: [ObdSubEntry; 1] = [ObdSubEntry::ram_range(
-    0,
-    DataType::Real32,
-    Access::RW,
-    &V2009,
-    &L2009,
-)];
+crate::od_ram!(static S2009, V2009: f32 = 0.0 => Real32, RW, range(-1.0, 1.0));
 crate::od_ram!(static S200A, V200A: u8 => UInt8, W);
 crate::od_ram!(static S200B, V200B: [u8; 8] => TimeOfDay, RW);
 

@@ -23,13 +23,6 @@ use cop::port::{CanFrame, CanId, Ticks};
 use cop::sim::SimBus;
 use cop::wire::pdo::encode_sync;
 
-const fn limits_i16(default: i16, low: i16, high: i16) -> [u8; 6] {
-    let d = default.to_ne_bytes();
-    let l = low.to_ne_bytes();
-    let h = high.to_ne_bytes();
-    [d[0], d[1], l[0], l[1], h[0], h[1]]
-}
-
 /// One node's dictionary: error register, SYNC objects, EMCY COB-ID, two
 /// RPDOs and two TPDOs, inputs 0x2000 and outputs 0x2001 of the same shape
 /// (1 U8, 2 U16, 3 U32, 4-6 BOOLEAN, 7 INTEGER16 in -100..=100, 8 U8 not
@@ -56,7 +49,7 @@ macro_rules! node_dictionary {
 
             static IN: [[AtomicU8; 4]; 9] = [const { decl::zeroed() }; 9];
             static OUT: [[AtomicU8; 4]; 9] = [const { decl::zeroed() }; 9];
-            static RANGE: [u8; 6] = limits_i16(0, -100, 100);
+            static RANGE: [u8; 6] = decl::limits(0i16.to_ne_bytes(), (-100i16).to_ne_bytes(), 100i16.to_ne_bytes());
 
             const fn record(v: &'static [[AtomicU8; 4]; 9]) -> [ObdSubEntry; 10] {
                 [

@@ -34,13 +34,6 @@ const LONG: usize = if SDOS_BUFFER_SIZE < 250 {
     250
 };
 
-const fn limits_u16(default: u16, low: u16, high: u16) -> [u8; 6] {
-    let d = default.to_ne_bytes();
-    let l = low.to_ne_bytes();
-    let h = high.to_ne_bytes();
-    [d[0], d[1], l[0], l[1], h[0], h[1]]
-}
-
 const fn array_of(access: Access) -> Access {
     Access(access.0 | Access::ARRAY)
 }
@@ -116,15 +109,7 @@ macro_rules! test_od {
             DOMAIN_LEN as u32,
             None,
         )];
-        static RANGED: [AtomicU8; 2] = decl::zeroed();
-        static RANGED_LIMITS: [u8; 6] = limits_u16(100, 10, 1000);
-        static S2002: [ObdSubEntry; 1] = [ObdSubEntry::ram_range(
-            0,
-            DataType::UInt16,
-            Access::RW,
-            &RANGED,
-            &RANGED_LIMITS,
-        )];
+        cop::od_ram!(static S2002, RANGED: u16 = 100 => UInt16, RW, range(10, 1000));
         static RO: [AtomicU8; 4] = decl::init(0xCAFE_BABEu32.to_ne_bytes());
         static S2003: [ObdSubEntry; 1] =
             [ObdSubEntry::ram(0, DataType::UInt32, Access::R, &RO, None)];

@@ -13,3 +13,18 @@ pub mod slave;
 pub use lifeguard::LifeGuardSlave;
 pub use master::NmtMaster;
 pub use slave::NmtCommand;
+
+/// Where the supervision of a cyclic message stands (the heartbeat
+/// consumer's per producer, the life guarding slave's of its master's guard
+/// requests).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) enum Supervision {
+    /// Nothing received since the start or the last reset: not supervised
+    /// yet.
+    #[default]
+    Waiting,
+    /// The messages arrive in time.
+    Active,
+    /// The time passed without one; reported once.
+    Lost,
+}

@@ -37,6 +37,8 @@ use core::sync::atomic::AtomicU8;
 use super::PDO_MAX_MAPPENTRIES;
 use crate::od::{Access, DataType, ObdSubEntry, decl};
 
+crate::od::decl::default_is_new!(CommuVars, MappVars);
+
 /// Highest subindex of a communication parameter object.
 static COMMU_SUB0: [u8; 1] = [5];
 
@@ -62,12 +64,6 @@ impl CommuVars {
             inhibit: decl::zeroed(),
             event: decl::zeroed(),
         }
-    }
-}
-
-impl Default for CommuVars {
-    fn default() -> Self {
-        Self::new()
     }
 }
 
@@ -131,12 +127,6 @@ impl MappVars {
             count: decl::zeroed(),
             entries: [const { decl::zeroed() }; PDO_MAX_MAPPENTRIES],
         }
-    }
-}
-
-impl Default for MappVars {
-    fn default() -> Self {
-        Self::new()
     }
 }
 

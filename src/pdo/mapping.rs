@@ -90,7 +90,7 @@ pub fn check_entry(
     raw: u32,
     rules: Rules,
 ) -> Result<u8, OdError> {
-    let e = MapEntry::from_u32(raw);
+    let e = MapEntry::decode(raw);
     if u16::from(e.bits) > MAX_BITS {
         return Err(refuse::LENGTH);
     }

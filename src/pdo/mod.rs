@@ -697,7 +697,7 @@ impl Pdo {
                 .iter()
                 .take(ch.cfg.count)
                 .filter_map(|raw| {
-                    let e = MapEntry::from_u32(*raw);
+                    let e = MapEntry::decode(*raw);
                     od.find(e.index, e.sub).ok()
                 })
                 .any(|obj| is_var(&obj));
@@ -790,25 +790,7 @@ impl Pdo {
         q: &mut ActionQueue,
         emcy: &mut EmcyProducer,
     ) -> bool {
-        let taken = self.take_frame(od, state, rx, port, now, q, emcy);
-        if taken {
-            self.wake();
-        }
-        taken
-    }
-
-    /// [`Pdo::on_frame`] without the wake-up.
-    #[allow(clippy::too_many_arguments)]
-    fn take_frame(
-        &mut self,
-        od: &ObjectDictionary,
-        state: NmtState,
-        rx: &RxFrame,
-        port: &mut impl CanPort,
-        now: Ticks,
-        q: &mut ActionQueue,
-        emcy: &mut EmcyProducer,
-    ) -> bool {
+        // A taken frame wakes the module's timer pass (see `quiet`).
         let f = &rx.frame;
         if Some(f.id) == self.sync.cob && !f.rtr {
             // CiA 301 §7.2.5: DLC 0, or 1 with the counter; other lengths
@@ -816,6 +798,7 @@ impl Pdo {
             if wire::decode_sync(f).is_some() && state == NmtState::Operational {
                 self.on_sync(rx.time);
             }
+            self.wake();
             return true;
         }
         if f.rtr {
@@ -829,6 +812,7 @@ impl Pdo {
             if state == NmtState::Operational && ch.usable() {
                 ch.rtr_pending = true;
             }
+            self.wake();
             return true;
         }
         let Some(n) = self.rx.iter().position(|c| c.cfg.cob == Some(f.id)) else {
@@ -837,6 +821,7 @@ impl Pdo {
         if state == NmtState::Operational {
             self.on_rpdo(n, od, rx, port, now, q, emcy);
         }
+        self.wake();
         true
     }
 
@@ -1211,7 +1196,7 @@ fn sample(od: &ObjectDictionary, ch: &Channel) -> Result<Payload, CopKernel> {
     }
     let mut pos = 0u16;
     for raw in ch.cfg.entries.iter().take(ch.cfg.count) {
-        let e = MapEntry::from_u32(*raw);
+        let e = MapEntry::decode(*raw);
         let obj = od
             .find(e.index, e.sub)
             .map_err(|_| CopKernel::PdoErrorPdoEncode)?;
@@ -1245,7 +1230,7 @@ fn apply(od: &ObjectDictionary, ch: &Channel, p: &Payload) -> Result<(), CopKern
         .iter_mut()
         .zip(ch.cfg.entries.iter().take(ch.cfg.count))
     {
-        let e = MapEntry::from_u32(*raw);
+        let e = MapEntry::decode(*raw);
         let v = wire::extract_bits(p.bytes(), pos, e.bits).ok_or(CopKernel::PdoErrorPdoDecode)?;
         pos += u16::from(e.bits);
         if mapping::is_dummy(e) {

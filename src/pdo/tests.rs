@@ -25,12 +25,11 @@ static B1: [AtomicU8; 1] = od_decl::zeroed();
 static PLAIN: [AtomicU8; 1] = od_decl::zeroed();
 static RO: [AtomicU8; 1] = od_decl::zeroed();
 static RANGED: [AtomicU8; 2] = od_decl::zeroed();
-static RANGED_LIMITS: [u8; 6] = {
-    let d = 0i16.to_ne_bytes();
-    let l = (-100i16).to_ne_bytes();
-    let h = 100i16.to_ne_bytes();
-    [d[0], d[1], l[0], l[1], h[0], h[1]]
-};
+static RANGED_LIMITS: [u8; 6] = od_decl::limits(
+    0i16.to_ne_bytes(),
+    (-100i16).to_ne_bytes(),
+    100i16.to_ne_bytes(),
+);
 static B2: [AtomicU8; 1] = od_decl::zeroed();
 static TEXT: [AtomicU8; 5] = od_decl::zeroed();
 static S2000: [ObdSubEntry; 10] = [
