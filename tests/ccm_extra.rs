@@ -141,7 +141,7 @@ impl Node {
 impl Net {
     /// Both nodes PRE-OPERATIONAL, trace and events empty.
     fn new() -> Net {
-        let mut net = Net::pair(&SERIAL, (node_a::od(), ID_A), (node_b::od(), ID_B));
+        let mut net = Net::pair(&SERIAL, (node_a::od, ID_A), (node_b::od, ID_B));
         net.bus.clear_trace();
         net.a.events.clear();
         net.b.events.clear();

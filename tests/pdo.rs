@@ -152,7 +152,7 @@ impl Net {
     /// Both nodes PRE-OPERATIONAL, A's TPDO 1 (0x181, type 255, inputs
     /// 1..3) and B's RPDO 1 (0x181, outputs 1..3) linked, trace empty.
     fn new() -> Net {
-        let mut net = Net::pair(&SERIAL, (node_a::od(), 1), (node_b::od(), 2));
+        let mut net = Net::pair(&SERIAL, (node_a::od, 1), (node_b::od, 2));
         // Predefined connection set: TPDO 1 of node 1 is 0x181.
         assert_eq!(net.a.read(0x1800, 1), 0x181);
         net.b.write(0x1400, 1, 0x181, 4).unwrap();

@@ -107,17 +107,18 @@ pub struct Net {
 }
 
 impl Net {
-    /// Nodes `a` and `b` with their dictionaries and node-IDs, both
+    /// Nodes `a` and `b` with their dictionaries (made once the lock is
+    /// held: they share the file's statics) and node-IDs, both
     /// PRE-OPERATIONAL with their start-up events and frames kept.
     pub fn pair(
         serial: &'static Mutex<()>,
-        a: (ObjectDictionary, u8),
-        b: (ObjectDictionary, u8),
+        a: (fn() -> ObjectDictionary, u8),
+        b: (fn() -> ObjectDictionary, u8),
     ) -> Net {
         let guard = serial.lock().unwrap_or_else(|e| e.into_inner());
         let bus = SimBus::new();
-        let a = Node::new(&bus, a.0, a.1);
-        let b = Node::new(&bus, b.0, b.1);
+        let a = Node::new(&bus, (a.0)(), a.1);
+        let b = Node::new(&bus, (b.0)(), b.1);
         Net {
             bus,
             a,
