@@ -24,6 +24,7 @@ run_stage() {
     lint)
         stage "format and lints"
         cargo fmt --all -- --check
+        scripts/layers.sh
         cargo clippy --all-targets -- -D warnings
         cargo clippy --lib --no-default-features -- -D warnings
         cargo clippy --lib --features srdo-static-mapping,srdo-granularity-16,pdo-bit-mapping,pdo-granularity-64 -- -D warnings

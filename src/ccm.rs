@@ -24,25 +24,24 @@
 //!    synchronous PDOs it triggers), SDO timeout, heartbeat, life guarding,
 //!    delayed emergencies.
 
-use crate::emcc::EmcyConsumer;
-use crate::emcy::EmcyProducer;
+use crate::emcy::{self, EmcyConsumer, EmcyProducer};
 use crate::error::{CopKernel, CopResult, OdError};
 use crate::event::{Action, ActionQueue, Event, Internal, NmtEvent, NmtState};
-use crate::hbc::HeartbeatConsumer;
-use crate::heartbeat::HeartbeatProducer;
-use crate::lgs::LifeGuardSlave;
-use crate::nmtm::NmtMaster;
+use crate::heartbeat::{self, HeartbeatConsumer, HeartbeatProducer};
+use crate::nmt::slave::{self, Transition};
+use crate::nmt::{LifeGuardSlave, NmtMaster, lifeguard};
 use crate::od::{ByteOrder, Object, ObjectDictionary, Staged, WriteHooks};
 use crate::pdo::Pdo;
 use crate::port::{CanId, CanPort, Priority, RxFrame, Ticks};
 use crate::sdo::{SdoClient, SdoServer};
 use crate::srdo::Srdo;
-use crate::store::StoreRestore;
-use crate::syncp::SyncProducer;
+use crate::store::{self, StoreRestore};
+use crate::sync::{self, SyncProducer};
 use crate::wire::emcy::Emergency;
 use crate::wire::nmt::{self, NmtCs};
 use crate::wire::srdo::{COB_ID_COUNT, COB_ID_MIN, GFC_ID};
 
+mod pdo;
 mod services;
 
 /// True for the identifiers the SRDO module receives: the GFC (0x001) and
@@ -54,44 +53,7 @@ const fn srdo_or_gfc_id(id: CanId) -> bool {
     raw == GFC_ID as u32 || raw.wrapping_sub(COB_ID_MIN as u32) < COB_ID_COUNT as u32
 }
 
-/// Local NMT commands (`tNmtCommand`, `CcmNmtsExecCommand`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[repr(u16)]
-pub enum NmtCommand {
-    /// kNmtCommInitialize.
-    Initialize = 0x0000,
-    /// kNmtCommStartRemoteNode / kNmtCommEnterOperational.
-    StartRemoteNode = 0x0001,
-    /// kNmtCommStopRemoteNode / kNmtCommEnterStopped.
-    StopRemoteNode = 0x0002,
-    /// kNmtCommEnterPreOperational.
-    EnterPreOperational = 0x0080,
-    /// kNmtCommResetNode.
-    ResetNode = 0x0081,
-    /// kNmtCommResetCommunication.
-    ResetCommunication = 0x0082,
-    /// kNmtCommInitBeforePost.
-    InitBeforePost = 0x0101,
-    /// kNmtCommEnterPostPreOperational.
-    EnterPostPreOperational = 0x0180,
-}
-
-impl NmtCommand {
-    /// Decodes a `tNmtCommand` value.
-    pub const fn from_u16(v: u16) -> Option<NmtCommand> {
-        Some(match v {
-            0x0000 => NmtCommand::Initialize,
-            0x0001 => NmtCommand::StartRemoteNode,
-            0x0002 => NmtCommand::StopRemoteNode,
-            0x0080 => NmtCommand::EnterPreOperational,
-            0x0081 => NmtCommand::ResetNode,
-            0x0082 => NmtCommand::ResetCommunication,
-            0x0101 => NmtCommand::InitBeforePost,
-            0x0180 => NmtCommand::EnterPostPreOperational,
-            _ => return None,
-        })
-    }
-}
+pub use crate::nmt::NmtCommand;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Phase {
@@ -145,6 +107,9 @@ pub struct Stack {
 }
 
 /// The module reactions to dictionary writes.
+///
+/// Made with [`hooks!`], which borrows the modules field by field, so that
+/// the dictionary and the SDO server stay usable beside them.
 struct Hooks<'a> {
     state: NmtState,
     node: u8,
@@ -160,6 +125,26 @@ struct Hooks<'a> {
     sdo_changed: bool,
 }
 
+/// The [`Hooks`] of a stack (`$stack`) at `$now`.
+macro_rules! hooks {
+    ($stack:expr, $now:expr) => {
+        Hooks {
+            state: $stack.state,
+            node: $stack.node_id,
+            now: $now,
+            srdo: &mut $stack.srdo,
+            pdo: &mut $stack.pdo,
+            hb: &mut $stack.hb,
+            hbc: &mut $stack.hbc,
+            emcy: &mut $stack.emcy,
+            lgs: &mut $stack.lgs,
+            syncp: &mut $stack.syncp,
+            store: &mut $stack.store,
+            sdo_changed: false,
+        }
+    };
+}
+
 impl WriteHooks for Hooks<'_> {
     fn check(
         &mut self,
@@ -173,7 +158,7 @@ impl WriteHooks for Hooks<'_> {
         if crate::pdo::handles(obj.index()) {
             self.pdo.check_write(od, obj, value)?;
         }
-        crate::emcy::check_error_field_write(obj, value)?;
+        emcy::producer::check_error_field_write(obj, value)?;
         StoreRestore::check_write(od, obj, value)?;
         Ok(())
     }
@@ -186,20 +171,22 @@ impl WriteHooks for Hooks<'_> {
 
     fn after_store(&mut self, od: &ObjectDictionary, obj: &Object) {
         match obj.index() {
-            crate::heartbeat::PRODUCER_TIME_INDEX => self.hb.reconfigure(od, self.now),
-            crate::hbc::CONSUMER_TIME_INDEX => self.hbc.reconfigure(od),
-            crate::emcy::COB_ID_INDEX | crate::emcy::INHIBIT_INDEX => {
+            heartbeat::PRODUCER_TIME_INDEX => self.hb.reconfigure(od, self.now),
+            heartbeat::CONSUMER_TIME_INDEX => self.hbc.reconfigure(od),
+            emcy::producer::COB_ID_INDEX | emcy::producer::INHIBIT_INDEX => {
                 self.emcy.reconfigure(od, self.node)
             }
-            crate::emcy::ERROR_FIELD_INDEX if obj.sub() == 0 => crate::emcy::clear_error_field(od),
-            crate::lgs::GUARD_TIME_INDEX | crate::lgs::LIFE_TIME_FACTOR_INDEX => {
+            emcy::producer::ERROR_FIELD_INDEX if obj.sub() == 0 => {
+                emcy::producer::clear_error_field(od)
+            }
+            lifeguard::GUARD_TIME_INDEX | lifeguard::LIFE_TIME_FACTOR_INDEX => {
                 self.lgs.reconfigure(od)
             }
-            crate::syncp::COB_ID_SYNC_INDEX | crate::syncp::CYCLE_PERIOD_INDEX => {
+            sync::producer::COB_ID_SYNC_INDEX | sync::producer::CYCLE_PERIOD_INDEX => {
                 self.syncp.reconfigure(od, self.now);
                 self.pdo.after_store(od, obj, self.now);
             }
-            crate::store::LOAD_INDEX => self.store.after_store(od, obj),
+            store::LOAD_INDEX => self.store.after_store(od, obj),
             // SDO server 0x1200..0x127F, SDO client 0x1280..0x12FF.
             0x1200..=0x12FF => self.sdo_changed = true,
             0x1300..=0x13FF => self.srdo.after_store(od, obj),
@@ -610,20 +597,7 @@ impl Stack {
             return;
         }
         if Some(f.id) == self.sdo.rx_id() {
-            let mut hooks = Hooks {
-                state: self.state,
-                node: self.node_id,
-                now,
-                srdo: &mut self.srdo,
-                pdo: &mut self.pdo,
-                hb: &mut self.hb,
-                hbc: &mut self.hbc,
-                emcy: &mut self.emcy,
-                lgs: &mut self.lgs,
-                syncp: &mut self.syncp,
-                store: &mut self.store,
-                sdo_changed: false,
-            };
+            let mut hooks = hooks!(self, now);
             let reply = self.sdo.on_frame(&self.od, &mut hooks, f, now);
             let changed = hooks.sdo_changed;
             if let Some(r) = reply {
@@ -650,12 +624,9 @@ impl Stack {
     }
 
     fn nmt_command(&mut self, cs: NmtCs) {
-        match cs {
-            NmtCs::Start => self.queue_state(NmtState::Operational),
-            NmtCs::Stop => self.queue_state(NmtState::Stopped),
-            NmtCs::EnterPreOperational => self.queue_state(NmtState::PreOperational),
-            NmtCs::ResetNode => self.queue_reset(true),
-            NmtCs::ResetCommunication => self.queue_reset(false),
+        match Transition::of(cs) {
+            Transition::Enter(s) => self.queue_state(s),
+            Transition::Reset { node } => self.queue_reset(node),
         }
     }
 
@@ -664,74 +635,34 @@ impl Stack {
         if !self.connected {
             return Err(CopKernel::NmtStateError);
         }
-        match cmd {
-            NmtCommand::StartRemoteNode => self.nmt_command(NmtCs::Start),
-            NmtCommand::StopRemoteNode => self.nmt_command(NmtCs::Stop),
-            NmtCommand::EnterPreOperational | NmtCommand::EnterPostPreOperational => {
-                self.nmt_command(NmtCs::EnterPreOperational)
-            }
-            NmtCommand::ResetNode => self.nmt_command(NmtCs::ResetNode),
-            NmtCommand::ResetCommunication => self.nmt_command(NmtCs::ResetCommunication),
-            NmtCommand::Initialize | NmtCommand::InitBeforePost => {
-                return Err(CopKernel::NmtUnknownCommand);
-            }
-        }
+        let cs = cmd.specifier().ok_or(CopKernel::NmtUnknownCommand)?;
+        self.nmt_command(cs);
         Ok(())
     }
 
     fn queue_state(&mut self, target: NmtState) {
-        if self.state == target {
-            return;
-        }
-        let ev = match target {
-            NmtState::Operational => NmtEvent::EnterOperational,
-            NmtState::Stopped => NmtEvent::EnterStopped,
-            NmtState::PreOperational => NmtEvent::EnterPreOperational,
-            NmtState::Initialisation => return,
-        };
-        self.queue.schedule(Internal::EnterState(target));
-        self.queue.emit(Event::Nmt(ev));
+        slave::queue_state(&mut self.queue, self.state, target);
     }
 
-    /// Queues a reset: node (application and communication objects) or
-    /// communication only. When the node is connected it ends with the
-    /// boot-up message and PRE-OPERATIONAL.
+    /// Queues a reset ([`slave::queue_reset`]).
     fn queue_reset(&mut self, node: bool) {
-        let q = &mut self.queue;
-        q.schedule(Internal::EnterState(NmtState::Initialisation));
-        if node {
-            q.schedule(Internal::RestoreApplication);
-            q.emit(Event::Nmt(NmtEvent::ResetNode));
-        }
-        q.emit(Event::Nmt(NmtEvent::PreResetCommunication));
-        q.schedule(Internal::RestoreCommunication);
-        q.emit(Event::Nmt(NmtEvent::ResetCommunication));
-        q.schedule(Internal::Reconfigure);
-        q.emit(Event::Nmt(NmtEvent::PostResetCommunication));
+        slave::queue_reset(&mut self.queue, node);
     }
 
     fn run(&mut self, i: Internal, port: &mut impl CanPort, now: Ticks) {
         match i {
             Internal::RestoreApplication => {
                 self.restore_defaults(0x2000, 0x9FFF);
-                self.store.restored(crate::store::part::APP);
+                self.store.restored(store::part::APP);
             }
             Internal::RestoreCommunication => {
                 self.restore_defaults(0x1000, 0x1FFF);
-                self.store.restored(crate::store::part::GEN);
+                self.store.restored(store::part::GEN);
                 self.lgs.reset_communication();
                 self.syncp.reset_communication();
             }
             Internal::Reconfigure => {
-                self.reconfigure_services(now);
-                self.hb.reconfigure(&self.od, now);
-                self.hbc.reconfigure(&self.od);
-                self.emcy.reconfigure(&self.od, self.node_id);
-                self.sdo.reconfigure(&self.od, self.node_id);
-                self.sdoc.reconfigure(&self.od);
-                self.subscribe(port);
-                self.srdo.reconfigure(&self.od, port);
-                self.pdo.reconfigure(&self.od, self.node_id, port);
+                self.reconfigure_modules(port, now);
                 if self.connected && self.state == NmtState::Initialisation {
                     self.queue_state(NmtState::PreOperational);
                 }
@@ -765,15 +696,7 @@ impl Stack {
     /// dynamic OD was built, rolled back or destroyed. PDOs keep running
     /// when the node is OPERATIONAL.
     pub fn reload_configuration(&mut self, port: &mut impl CanPort, now: Ticks) {
-        self.reconfigure_services(now);
-        self.hb.reconfigure(&self.od, now);
-        self.hbc.reconfigure(&self.od);
-        self.emcy.reconfigure(&self.od, self.node_id);
-        self.sdo.reconfigure(&self.od, self.node_id);
-        self.sdoc.reconfigure(&self.od);
-        self.subscribe(port);
-        self.srdo.reconfigure(&self.od, port);
-        self.pdo.reconfigure(&self.od, self.node_id, port);
+        self.reconfigure_modules(port, now);
         self.pdo.on_state(self.state, now);
     }
 
@@ -796,6 +719,14 @@ impl Stack {
         let _ = self.od.set_user_part(original_user);
         self.od.restore_defaults(0x1400, 0x1BFF);
         self.sdo.cancel();
+        self.reconfigure_modules(port, now);
+        self.pdo.on_state(NmtState::PreOperational, now);
+    }
+
+    /// Lets every module take over its parameters from the dictionary and
+    /// tells the driver the identifiers (after reset communication, and
+    /// after a dynamic OD changed the dictionary).
+    fn reconfigure_modules(&mut self, port: &mut impl CanPort, now: Ticks) {
         self.reconfigure_services(now);
         self.hb.reconfigure(&self.od, now);
         self.hbc.reconfigure(&self.od);
@@ -805,7 +736,6 @@ impl Stack {
         self.subscribe(port);
         self.srdo.reconfigure(&self.od, port);
         self.pdo.reconfigure(&self.od, self.node_id, port);
-        self.pdo.on_state(NmtState::PreOperational, now);
     }
 
     /// Tells the driver which identifiers to receive (`CdrvDefineCanId`):
@@ -878,20 +808,7 @@ impl Stack {
         data: &[u8],
         now: Ticks,
     ) -> Result<(), OdError> {
-        let mut hooks = Hooks {
-            state: self.state,
-            node: self.node_id,
-            now,
-            srdo: &mut self.srdo,
-            pdo: &mut self.pdo,
-            hb: &mut self.hb,
-            hbc: &mut self.hbc,
-            emcy: &mut self.emcy,
-            lgs: &mut self.lgs,
-            syncp: &mut self.syncp,
-            store: &mut self.store,
-            sdo_changed: false,
-        };
+        let mut hooks = hooks!(self, now);
         let r = self.od.write(index, sub, order, data, &mut hooks);
         if hooks.sdo_changed {
             self.sdo.reconfigure(&self.od, self.node_id);

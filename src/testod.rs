@@ -8,35 +8,12 @@
 use core::sync::atomic::AtomicU8;
 
 use crate::od::{Access, DataType, ObdEntry, ObdSubEntry, ObdVarEntry, ObjectDictionary, decl};
-use crate::pdo::PDO_MAX_MAPPENTRIES;
-use crate::pdo::decl::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
 
-static DEVICE_TYPE: [u8; 4] = 0x0001_0191u32.to_ne_bytes();
-static S1000: [ObdSubEntry; 1] = [ObdSubEntry::rom(
-    0,
-    DataType::UInt32,
-    Access::R,
-    &DEVICE_TYPE,
-)];
-static ERR_REG: [AtomicU8; 1] = decl::zeroed();
-static S1001: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-    0,
-    DataType::UInt8,
-    Access::R,
-    &ERR_REG,
-    Some(&[0]),
-)];
+crate::od_rom!(static S1000: u32 = 0x0001_0191 => UInt32, R);
+crate::od_ram!(static S1001, ERR_REG: u8 = 0 => UInt8, R);
 static NAME: &[u8] = b"cop reference device";
 static S1008: [ObdSubEntry; 1] = [ObdSubEntry::rom_string(0, Access::R, NAME)];
-static HB: [AtomicU8; 2] = decl::zeroed();
-static HB_DEF: [u8; 2] = 0u16.to_ne_bytes();
-static S1017: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-    0,
-    DataType::UInt16,
-    Access::SRW,
-    &HB,
-    Some(&HB_DEF),
-)];
+crate::od_ram!(static S1017, HB: u16 = 0 => UInt16, SRW);
 static ID_VENDOR: [u8; 4] = 0x0000_0123u32.to_ne_bytes();
 static ID_PRODUCT: [u8; 4] = 0x0000_0456u32.to_ne_bytes();
 static ID_REVISION: [u8; 4] = 0x0001_0000u32.to_ne_bytes();
@@ -49,55 +26,16 @@ static S1018: [ObdSubEntry; 5] = [
     ObdSubEntry::rom(4, DataType::UInt32, Access::R, &ID_SERIAL),
 ];
 
-static V2000: [AtomicU8; 1] = decl::zeroed();
-static V2001: [AtomicU8; 2] = decl::zeroed();
-static L2001: [u8; 6] = {
-    let d = 0i16.to_ne_bytes();
-    let l = (-100i16).to_ne_bytes();
-    let h = 100i16.to_ne_bytes();
-    [d[0], d[1], l[0], l[1], h[0], h[1]]
-};
-static V2002: [AtomicU8; 4] = decl::zeroed();
 static V2003: [AtomicU8; 65] = decl::zeroed();
 static V2005: [AtomicU8; 4] = decl::zeroed();
 static E2005: ObdVarEntry = ObdVarEntry::new();
 static V2006: [AtomicU8; 300] = decl::zeroed();
 static E2006: ObdVarEntry = ObdVarEntry::new();
 static V2007: [AtomicU8; 8] = decl::zeroed();
-static V2008: [AtomicU8; 8] = decl::zeroed();
-static V2009: [AtomicU8; 4] = decl::zeroed();
-static L2009: [u8; 12] = {
-    let d = 0.0f32.to_ne_bytes();
-    let l = (-1.0f32).to_ne_bytes();
-    let h = 1.0f32.to_ne_bytes();
-    [
-        d[0], d[1], d[2], d[3], l[0], l[1], l[2], l[3], h[0], h[1], h[2], h[3],
-    ]
-};
-static V200A: [AtomicU8; 1] = decl::zeroed();
-static V200B: [AtomicU8; 8] = decl::zeroed();
 
-static S2000: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-    0,
-    DataType::UInt8,
-    Access::PRW,
-    &V2000,
-    Some(&[0]),
-)];
-static S2001: [ObdSubEntry; 1] = [ObdSubEntry::ram_range(
-    0,
-    DataType::Int16,
-    Access::PRW,
-    &V2001,
-    &L2001,
-)];
-static S2002: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-    0,
-    DataType::UInt32,
-    Access::PRW,
-    &V2002,
-    None,
-)];
+crate::od_ram!(static S2000, V2000: u8 = 0 => UInt8, PRW);
+crate::od_ram!(static S2001, V2001: i16 = 0 => Int16, PRW, range(-100, 100));
+crate::od_ram!(static S2002, V2002: u32 => UInt32, PRW);
 static S2003: [ObdSubEntry; 1] = [ObdSubEntry::ram_string(0, Access::RW, &V2003, c"hello")];
 static S2004: [ObdSubEntry; 1] = [ObdSubEntry::rom_string(0, Access::R, b"constant text")];
 static S2005: [ObdSubEntry; 1] = [ObdSubEntry::var(
@@ -120,62 +58,22 @@ static S2007: [ObdSubEntry; 2] = [
     ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[8]),
     ObdSubEntry::ram_array(1, DataType::UInt8, Access::PRW, &V2007, 1, Some(&[0])),
 ];
-static S2008: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-    0,
-    DataType::UInt64,
-    Access::RW,
-    &V2008,
-    None,
-)];
-static S2009: [ObdSubEntry; 1] = [ObdSubEntry::ram_range(
-    0,
-    DataType::Real32,
-    Access::RW,
-    &V2009,
-    &L2009,
-)];
-static S200A: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-    0,
-    DataType::UInt8,
-    Access::W,
-    &V200A,
-    None,
-)];
-static S200B: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-    0,
-    DataType::TimeOfDay,
-    Access::RW,
-    &V200B,
-    None,
-)];
+crate::od_ram!(static S2008, V2008: u64 => UInt64, RW);
+crate::od_ram!(static S2009, V2009: f32 = 0.0 => Real32, RW, range(-1.0, 1.0));
+crate::od_ram!(static S200A, V200A: u8 => UInt8, W);
+crate::od_ram!(static S200B, V200B: [u8; 8] => TimeOfDay, RW);
 
 // Two receive and two transmit PDOs: RPDO 1 (0x200 + node-ID, type 255)
 // maps 0x2000 and 0x2002; TPDO 1 (0x180 + node-ID, type 255) maps 0x2001;
 // PDO 2 of each direction is invalid (bit 31) and unmapped.
-static V1400: CommuVars = CommuVars::new();
-static D1400: CommuDefaults = CommuDefaults::new(0x200, 255, 0, 0);
-static S1400: [ObdSubEntry; 5] = commu_subs(&V1400, &D1400);
-static V1401: CommuVars = CommuVars::new();
-static D1401: CommuDefaults = CommuDefaults::new(0x8000_0300, 255, 0, 0);
-static S1401: [ObdSubEntry; 5] = commu_subs(&V1401, &D1401);
-static V1600: MappVars = MappVars::new();
-static D1600: MappDefaults = MappDefaults::new(&[0x2000_0008, 0x2002_0020]);
-static S1600: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1600, &D1600);
-static V1601: MappVars = MappVars::new();
-static D1601: MappDefaults = MappDefaults::new(&[]);
-static S1601: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1601, &D1601);
-static V1800: CommuVars = CommuVars::new();
-static D1800: CommuDefaults = CommuDefaults::new(0x180, 255, 0, 0);
-static S1800: [ObdSubEntry; 5] = commu_subs(&V1800, &D1800);
-static V1801: CommuVars = CommuVars::new();
-static D1801: CommuDefaults = CommuDefaults::new(0x8000_0280, 255, 0, 0);
-static S1801: [ObdSubEntry; 5] = commu_subs(&V1801, &D1801);
-static V1A00: MappVars = MappVars::new();
-static D1A00: MappDefaults = MappDefaults::new(&[0x2001_0010]);
-static S1A00: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1A00, &D1A00);
-static V1A01: MappVars = MappVars::new();
-static D1A01: MappDefaults = MappDefaults::new(&[]);
-static S1A01: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1A01, &D1A01);
+crate::pdo_commu!(static S1400, V1400 = 0x200, 255, 0, 0);
+crate::pdo_commu!(static S1401, V1401 = 0x8000_0300, 255, 0, 0);
+crate::pdo_mapp!(static S1600, V1600 = [0x2000_0008, 0x2002_0020]);
+crate::pdo_mapp!(static S1601, V1601 = []);
+crate::pdo_commu!(static S1800, V1800 = 0x180, 255, 0, 0);
+crate::pdo_commu!(static S1801, V1801 = 0x8000_0280, 255, 0, 0);
+crate::pdo_mapp!(static S1A00, V1A00 = [0x2001_0010]);
+crate::pdo_mapp!(static S1A01, V1A01 = []);
 
 static GENERIC: [ObdEntry; 13] = [
     ObdEntry::new(0x1000, &S1000, None),

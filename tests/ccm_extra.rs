@@ -15,15 +15,12 @@ mod common;
 
 use core::sync::atomic::AtomicU8;
 
-use common::Node;
+use common::{Net, Node};
 use cop::ccm::{NmtCommand, Stack};
 use cop::error::{CopKernel, OdError, SdoAbort};
 use cop::event::{ErrCtrlEvent, Event, NmtState};
 use cop::od::{Access, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
-use cop::pdo::PDO_MAX_MAPPENTRIES;
-use cop::pdo::decl::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
 use cop::port::{CanFrame, CanId};
-use cop::sim::SimBus;
 use cop::store::{self, part};
 use cop::wire::emcy::{self, Emergency};
 use cop::wire::time::TimeOfDay;
@@ -31,36 +28,11 @@ use cop::wire::time::TimeOfDay;
 /// TPDO 1 (0x180, type 1 = every SYNC) mapping 0x2000 (U8), and 0x2000.
 macro_rules! sync_tpdo {
     () => {
-        static V1800: CommuVars = CommuVars::new();
-        static D1800: CommuDefaults = CommuDefaults::new(0x180, 1, 0, 0);
-        static S1800: [ObdSubEntry; 5] = commu_subs(&V1800, &D1800);
-        static V1A00: MappVars = MappVars::new();
-        static D1A00: MappDefaults = MappDefaults::new(&[0x2000_0008]);
-        static S1A00: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1A00, &D1A00);
-        static V2000: [AtomicU8; 1] = decl::zeroed();
-        static S2000: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-            0,
-            DataType::UInt8,
-            Access::PRW,
-            &V2000,
-            Some(&[0]),
-        )];
-        static ERR_REG: [AtomicU8; 1] = decl::zeroed();
-        static S1001: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-            0,
-            DataType::UInt8,
-            Access::R,
-            &ERR_REG,
-            Some(&[0]),
-        )];
-        static HB: [AtomicU8; 2] = decl::zeroed();
-        static S1017: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-            0,
-            DataType::UInt16,
-            Access::SRW,
-            &HB,
-            Some(&[0, 0]),
-        )];
+        cop::pdo_commu!(static S1800, V1800 = 0x180, 1, 0, 0);
+        cop::pdo_mapp!(static S1A00, V1A00 = [0x2000_0008]);
+        cop::od_ram!(static S2000, V2000: u8 = 0 => UInt8, PRW);
+        cop::od_ram!(static S1001, ERR_REG: u8 = 0 => UInt8, R);
+        cop::od_ram!(static S1017, HB: u16 = 0 => UInt16, SRW);
     };
 }
 
@@ -78,39 +50,10 @@ mod node_a {
         ObdSubEntry::ram(3, DataType::UInt32, Access::R, &ERRORS[2], Some(&[0; 4])),
         ObdSubEntry::ram(4, DataType::UInt32, Access::R, &ERRORS[3], Some(&[0; 4])),
     ];
-    static SYNC_COB: [AtomicU8; 4] = decl::zeroed();
-    static SYNC_COB_DEF: [u8; 4] = 0x80u32.to_ne_bytes();
-    static S1005: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt32,
-        Access::SRW,
-        &SYNC_COB,
-        Some(&SYNC_COB_DEF),
-    )];
-    static CYCLE: [AtomicU8; 4] = decl::zeroed();
-    static S1006: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt32,
-        Access::SRW,
-        &CYCLE,
-        Some(&[0; 4]),
-    )];
-    static GUARD: [AtomicU8; 2] = decl::zeroed();
-    static S100C: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt16,
-        Access::SRW,
-        &GUARD,
-        Some(&[0; 2]),
-    )];
-    static FACTOR: [AtomicU8; 1] = decl::zeroed();
-    static S100D: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt8,
-        Access::SRW,
-        &FACTOR,
-        Some(&[0]),
-    )];
+    cop::od_ram!(static S1005, SYNC_COB: u32 = 0x80 => UInt32, SRW);
+    cop::od_ram!(static S1006, CYCLE: u32 = 0 => UInt32, SRW);
+    cop::od_ram!(static S100C, GUARD: u16 = 0 => UInt16, SRW);
+    cop::od_ram!(static S100D, FACTOR: u8 = 0 => UInt8, SRW);
     // 0x1010 / 0x1011 as typical objdict.h files declare them: "saves on
     // command" / "restores" (1) as defaults.
     static ONE: [u8; 4] = 1u32.to_ne_bytes();
@@ -128,15 +71,7 @@ mod node_a {
         ObdSubEntry::ram(2, DataType::UInt32, Access::RW, &LOAD[1], Some(&ONE)),
         ObdSubEntry::ram(3, DataType::UInt32, Access::RW, &LOAD[2], Some(&ONE)),
     ];
-    static EMCY_COB: [AtomicU8; 4] = decl::zeroed();
-    static EMCY_COB_DEF: [u8; 4] = 0x80u32.to_ne_bytes();
-    static S1014: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt32,
-        Access::SRW,
-        &EMCY_COB,
-        Some(&EMCY_COB_DEF),
-    )];
+    cop::od_ram!(static S1014, EMCY_COB: u32 = 0x80 => UInt32, SRW);
 
     static GENERIC: [ObdEntry; 12] = [
         ObdEntry::new(0x1001, &S1001, None),
@@ -196,67 +131,21 @@ impl Node {
     }
 
     fn take_emcc(&mut self) -> Vec<(u8, Emergency)> {
-        let v = self
-            .events
-            .iter()
-            .filter_map(|e| match e {
-                Event::Emcc(n, em) => Some((*n, *em)),
-                _ => None,
-            })
-            .collect();
-        self.events.clear();
-        v
+        self.take(|e| match e {
+            Event::Emcc(n, em) => Some((*n, *em)),
+            _ => None,
+        })
     }
-}
-
-struct Net {
-    bus: SimBus,
-    a: Node,
-    b: Node,
-    _guard: std::sync::MutexGuard<'static, ()>,
 }
 
 impl Net {
-    /// Both nodes PRE-OPERATIONAL, trace empty.
+    /// Both nodes PRE-OPERATIONAL, trace and events empty.
     fn new() -> Net {
-        let guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
-        let bus = SimBus::new();
-        let a = Node::new(&bus, node_a::od(), ID_A);
-        let b = Node::new(&bus, node_b::od(), ID_B);
-        bus.clear_trace();
-        let mut net = Net {
-            bus,
-            a,
-            b,
-            _guard: guard,
-        };
+        let mut net = Net::pair(&SERIAL, (node_a::od, ID_A), (node_b::od, ID_B));
+        net.bus.clear_trace();
         net.a.events.clear();
         net.b.events.clear();
         net
-    }
-
-    /// Advances the bus by `ms` milliseconds, one cycle per node and ms.
-    fn run(&mut self, ms: u32) {
-        for _ in 0..ms {
-            self.bus.advance_ms(1);
-            self.step();
-        }
-    }
-
-    /// One cycle per node without advancing the time.
-    fn step(&mut self) {
-        self.a.cycle();
-        self.b.cycle();
-    }
-
-    /// (time, payload) of every data frame with identifier `id` so far.
-    fn frames(&self, id: u32) -> Vec<(u32, Vec<u8>)> {
-        self.bus
-            .sent()
-            .into_iter()
-            .filter(|(_, _, f)| f.id.id() == id && !f.rtr)
-            .map(|(_, t, f)| (t.0, f.payload().to_vec()))
-            .collect()
     }
 
     /// An NMT master's guard request to `node`.
@@ -359,7 +248,7 @@ fn emergency_consumer_table_codes() {
     let mut net = Net::new();
     let Net { b, .. } = &mut net;
     let (stack, port) = (&mut b.stack, &mut b.port);
-    let too_many: Vec<u8> = (10..10 + cop::emcc::CAPACITY as u8 + 1).collect();
+    let too_many: Vec<u8> = (10..10 + cop::emcy::consumer::CAPACITY as u8 + 1).collect();
     assert_eq!(
         stack.define_emcc_producers(port, &too_many),
         Err(CopKernel::EmccNoFreeProducerEntry)
@@ -378,7 +267,7 @@ fn emergency_consumer_table_codes() {
         Err(CopKernel::EmccNodeIdExist)
     );
     assert_eq!(stack.emcc().producers().count(), 0);
-    let full: Vec<u8> = (10..10 + cop::emcc::CAPACITY as u8).collect();
+    let full: Vec<u8> = (10..10 + cop::emcy::consumer::CAPACITY as u8).collect();
     stack.define_emcc_producers(port, &full).unwrap();
     assert_eq!(stack.emcc().producers().collect::<Vec<_>>(), full);
     // The same table again (every reset communication) is fine.
@@ -447,31 +336,38 @@ fn emcy_frames(net: &Net, node: u8) -> Vec<Vec<u8>> {
         .collect()
 }
 
-/// With `NMTS_USE_LIFEGUARDING` FALSE (`COP_NMTS_USE_LIFEGUARDING=0`)
-/// `CcmInitLgs` does not exist in C and the module never acts.
-fn life_guarding_built_in(net: &mut Net) -> bool {
-    if cop::config::NMTS_USE_LIFEGUARDING {
-        return true;
+impl Node {
+    /// `CcmInitLgs`, then `CcmConfigLgs(guard_ms, factor)`.
+    fn guard_lifetime(&mut self, guard_ms: u16, factor: u8) {
+        self.stack.init_lgs();
+        let now = self.now();
+        self.stack.config_lgs(guard_ms, factor, now).unwrap();
     }
-    net.a.stack.init_lgs();
+}
+
+/// A network for the life guarding tests, or `None` when
+/// `NMTS_USE_LIFEGUARDING` is FALSE (`COP_NMTS_USE_LIFEGUARDING=0`): then
+/// `CcmInitLgs` does not exist in C and the module never acts, which is
+/// checked here instead.
+fn life_guarding_net() -> Option<Net> {
+    let mut net = Net::new();
+    if cop::config::NMTS_USE_LIFEGUARDING {
+        return Some(net);
+    }
+    net.a.guard_lifetime(10, 2);
     assert!(!net.a.stack.lgs().is_initialised());
-    let now = net.a.now();
-    net.a.stack.config_lgs(10, 2, now).unwrap();
     net.guard(ID_A);
     net.run(100);
-    assert!(emcy_frames(net, ID_A).is_empty());
-    false
+    assert!(emcy_frames(&net, ID_A).is_empty());
+    None
 }
 
 #[test]
 fn life_guarding_reports_a_lost_master_once_per_loss() {
-    let mut net = Net::new();
-    if !life_guarding_built_in(&mut net) {
+    let Some(mut net) = life_guarding_net() else {
         return;
-    }
-    net.a.stack.init_lgs();
-    let now = net.a.now();
-    net.a.stack.config_lgs(100, 3, now).unwrap();
+    };
+    net.a.guard_lifetime(100, 3);
     assert_eq!((net.a.read(0x100C, 0), net.a.read(0x100D, 0)), (100, 3));
     assert_eq!(net.a.stack.lgs().life_time_ticks(), 3000);
 
@@ -515,13 +411,10 @@ fn life_guarding_reports_a_lost_master_once_per_loss() {
 
 #[test]
 fn life_guarding_in_stopped_is_recorded_not_sent() {
-    let mut net = Net::new();
-    if !life_guarding_built_in(&mut net) {
+    let Some(mut net) = life_guarding_net() else {
         return;
-    }
-    net.a.stack.init_lgs();
-    let now = net.a.now();
-    net.a.stack.config_lgs(10, 2, now).unwrap();
+    };
+    net.a.guard_lifetime(10, 2);
     net.a.command(NmtCommand::StopRemoteNode);
     net.guard(ID_A);
     // Guarding is served in STOPPED: state 0x04.
@@ -538,10 +431,9 @@ fn life_guarding_in_stopped_is_recorded_not_sent() {
 
 #[test]
 fn life_guarding_and_heartbeat_exclude_each_other() {
-    let mut net = Net::new();
-    if !life_guarding_built_in(&mut net) {
+    let Some(mut net) = life_guarding_net() else {
         return;
-    }
+    };
     let now = net.a.now();
     // Before CcmInitLgs life guarding is not configured.
     net.a.stack.config_lgs(100, 3, now).unwrap();
@@ -585,13 +477,10 @@ fn life_guarding_and_heartbeat_exclude_each_other() {
 
 #[test]
 fn life_guarding_without_objects_keeps_its_values_until_reset_communication() {
-    let mut net = Net::new();
-    if !life_guarding_built_in(&mut net) {
+    let Some(mut net) = life_guarding_net() else {
         return;
-    }
-    net.b.stack.init_lgs();
-    let now = net.b.now();
-    net.b.stack.config_lgs(50, 2, now).unwrap();
+    };
+    net.b.guard_lifetime(50, 2);
     assert_eq!(net.b.stack.lgs().config(), (50, 2));
     net.guard(ID_B);
     net.run(100);

@@ -10,12 +10,11 @@ mod common;
 
 use core::sync::atomic::AtomicU8;
 
-use common::Node;
+use common::{Net, Node};
 use cop::ccm::{NmtCommand, Stack};
 use cop::error::{CopKernel, OdError};
 use cop::event::{Event, NmtEvent, NmtState};
 use cop::od::{Access, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
-use cop::pdo::decl::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
 use cop::pdo::{
     Direction, PDO_MAX_MAPPENTRIES, PDO_USE_BIT_MAPPING, PDO_USE_DUMMY_MAPPING, PdoParam,
     StaticPdoParam,
@@ -23,13 +22,6 @@ use cop::pdo::{
 use cop::port::{CanFrame, CanId, Ticks};
 use cop::sim::SimBus;
 use cop::wire::pdo::encode_sync;
-
-const fn limits_i16(default: i16, low: i16, high: i16) -> [u8; 6] {
-    let d = default.to_ne_bytes();
-    let l = low.to_ne_bytes();
-    let h = high.to_ne_bytes();
-    [d[0], d[1], l[0], l[1], h[0], h[1]]
-}
 
 /// One node's dictionary: error register, SYNC objects, EMCY COB-ID, two
 /// RPDOs and two TPDOs, inputs 0x2000 and outputs 0x2001 of the same shape
@@ -40,79 +32,24 @@ macro_rules! node_dictionary {
         mod $name {
             use super::*;
 
-            static ERR_REG: [AtomicU8; 1] = decl::zeroed();
-            static S1001: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-                0,
-                DataType::UInt8,
-                Access::R,
-                &ERR_REG,
-                Some(&[0]),
-            )];
-            static SYNC_COB: [AtomicU8; 4] = decl::zeroed();
-            static SYNC_COB_DEF: [u8; 4] = 0x80u32.to_ne_bytes();
-            static S1005: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-                0,
-                DataType::UInt32,
-                Access::SRW,
-                &SYNC_COB,
-                Some(&SYNC_COB_DEF),
-            )];
-            static CYCLE: [AtomicU8; 4] = decl::zeroed();
-            static S1006: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-                0,
-                DataType::UInt32,
-                Access::SRW,
-                &CYCLE,
-                Some(&[0; 4]),
-            )];
-            static WINDOW: [AtomicU8; 4] = decl::zeroed();
-            static S1007: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-                0,
-                DataType::UInt32,
-                Access::SRW,
-                &WINDOW,
-                Some(&[0; 4]),
-            )];
-            static EMCY_COB: [AtomicU8; 4] = decl::zeroed();
-            static EMCY_COB_DEF: [u8; 4] = 0x80u32.to_ne_bytes();
-            static S1014: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-                0,
-                DataType::UInt32,
-                Access::SRW,
-                &EMCY_COB,
-                Some(&EMCY_COB_DEF),
-            )];
+            cop::od_ram!(static S1001, ERR_REG: u8 = 0 => UInt8, R);
+            cop::od_ram!(static S1005, SYNC_COB: u32 = 0x80 => UInt32, SRW);
+            cop::od_ram!(static S1006, CYCLE: u32 = 0 => UInt32, SRW);
+            cop::od_ram!(static S1007, WINDOW: u32 = 0 => UInt32, SRW);
+            cop::od_ram!(static S1014, EMCY_COB: u32 = 0x80 => UInt32, SRW);
 
-            static V1400: CommuVars = CommuVars::new();
-            static D1400: CommuDefaults = CommuDefaults::new(0x8000_0200, 255, 0, 0);
-            static S1400: [ObdSubEntry; 5] = commu_subs(&V1400, &D1400);
-            static V1401: CommuVars = CommuVars::new();
-            static D1401: CommuDefaults = CommuDefaults::new(0x8000_0300, 0, 0, 0);
-            static S1401: [ObdSubEntry; 5] = commu_subs(&V1401, &D1401);
-            static V1600: MappVars = MappVars::new();
-            static D1600: MappDefaults =
-                MappDefaults::new(&[0x2001_0108, 0x2001_0210, 0x2001_0320]);
-            static S1600: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1600, &D1600);
-            static V1601: MappVars = MappVars::new();
-            static D1601: MappDefaults = MappDefaults::new(&[]);
-            static S1601: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1601, &D1601);
-            static V1800: CommuVars = CommuVars::new();
-            static D1800: CommuDefaults = CommuDefaults::new(0x180, 255, 0, 0);
-            static S1800: [ObdSubEntry; 5] = commu_subs(&V1800, &D1800);
-            static V1801: CommuVars = CommuVars::new();
-            static D1801: CommuDefaults = CommuDefaults::new(0x8000_0280, 1, 0, 0);
-            static S1801: [ObdSubEntry; 5] = commu_subs(&V1801, &D1801);
-            static V1A00: MappVars = MappVars::new();
-            static D1A00: MappDefaults =
-                MappDefaults::new(&[0x2000_0108, 0x2000_0210, 0x2000_0320]);
-            static S1A00: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1A00, &D1A00);
-            static V1A01: MappVars = MappVars::new();
-            static D1A01: MappDefaults = MappDefaults::new(&[]);
-            static S1A01: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1A01, &D1A01);
+            cop::pdo_commu!(static S1400, V1400 = 0x8000_0200, 255, 0, 0);
+            cop::pdo_commu!(static S1401, V1401 = 0x8000_0300, 0, 0, 0);
+            cop::pdo_mapp!(static S1600, V1600 = [0x2001_0108, 0x2001_0210, 0x2001_0320]);
+            cop::pdo_mapp!(static S1601, V1601 = []);
+            cop::pdo_commu!(static S1800, V1800 = 0x180, 255, 0, 0);
+            cop::pdo_commu!(static S1801, V1801 = 0x8000_0280, 1, 0, 0);
+            cop::pdo_mapp!(static S1A00, V1A00 = [0x2000_0108, 0x2000_0210, 0x2000_0320]);
+            cop::pdo_mapp!(static S1A01, V1A01 = []);
 
             static IN: [[AtomicU8; 4]; 9] = [const { decl::zeroed() }; 9];
             static OUT: [[AtomicU8; 4]; 9] = [const { decl::zeroed() }; 9];
-            static RANGE: [u8; 6] = limits_i16(0, -100, 100);
+            static RANGE: [u8; 6] = decl::limits(0i16.to_ne_bytes(), (-100i16).to_ne_bytes(), 100i16.to_ne_bytes());
 
             const fn record(v: &'static [[AtomicU8; 4]; 9]) -> [ObdSubEntry; 10] {
                 [
@@ -204,40 +141,18 @@ impl Node {
     }
 
     fn pdo_events(&mut self) -> Vec<u16> {
-        let v = self
-            .events
-            .iter()
-            .filter_map(|e| match e {
-                Event::Pdo(i) => Some(*i),
-                _ => None,
-            })
-            .collect();
-        self.events.clear();
-        v
+        self.take(|e| match e {
+            Event::Pdo(i) => Some(*i),
+            _ => None,
+        })
     }
-}
-
-struct Net {
-    bus: SimBus,
-    a: Node,
-    b: Node,
-    _guard: std::sync::MutexGuard<'static, ()>,
 }
 
 impl Net {
     /// Both nodes PRE-OPERATIONAL, A's TPDO 1 (0x181, type 255, inputs
     /// 1..3) and B's RPDO 1 (0x181, outputs 1..3) linked, trace empty.
     fn new() -> Net {
-        let guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
-        let bus = SimBus::new();
-        let a = Node::new(&bus, node_a::od(), 1);
-        let b = Node::new(&bus, node_b::od(), 2);
-        let mut net = Net {
-            bus,
-            a,
-            b,
-            _guard: guard,
-        };
+        let mut net = Net::pair(&SERIAL, (node_a::od, 1), (node_b::od, 2));
         // Predefined connection set: TPDO 1 of node 1 is 0x181.
         assert_eq!(net.a.read(0x1800, 1), 0x181);
         net.b.write(0x1400, 1, 0x181, 4).unwrap();
@@ -253,34 +168,9 @@ impl Net {
         self.b.events.clear();
     }
 
-    /// Advances the bus by `ms` milliseconds, one cycle per node and ms.
-    fn run(&mut self, ms: u32) {
-        for _ in 0..ms {
-            self.bus.advance_ms(1);
-            self.a.cycle();
-            self.b.cycle();
-        }
-    }
-
-    /// One cycle per node without advancing the time.
-    fn step(&mut self) {
-        self.a.cycle();
-        self.b.cycle();
-    }
-
     fn sync(&mut self) {
         self.bus.inject(encode_sync(CanId::std_masked(0x80), None));
         self.step();
-    }
-
-    /// (time, payload) of every frame with identifier `id` so far.
-    fn frames(&self, id: u32) -> Vec<(u32, Vec<u8>)> {
-        self.bus
-            .sent()
-            .into_iter()
-            .filter(|(_, _, f)| f.id.id() == id && !f.rtr)
-            .map(|(_, t, f)| (t.0, f.payload().to_vec()))
-            .collect()
     }
 }
 

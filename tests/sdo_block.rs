@@ -37,8 +37,7 @@ const LONG: usize = if SDOS_BUFFER_SIZE < 240 {
 static TEXT: [AtomicU8; LONG + 1] = decl::zeroed();
 static S2000: [ObdSubEntry; 1] = [ObdSubEntry::ram_string(0, Access::RW, &TEXT, c"")];
 static S2001: [ObdSubEntry; 1] = [ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[0x5A])];
-static RO: [AtomicU8; 4] = decl::zeroed();
-static S2002: [ObdSubEntry; 1] = [ObdSubEntry::ram(0, DataType::UInt32, Access::R, &RO, None)];
+cop::od_ram!(static S2002, RO: u32 => UInt32, R);
 static SERVER_MAN: [ObdEntry; 3] = [
     ObdEntry::new(0x2000, &S2000, None),
     ObdEntry::new(0x2001, &S2001, None),

@@ -19,15 +19,8 @@ fn serial() -> MutexGuard<'static, ()> {
 }
 
 // Server dictionary (node 2).
-static U32_VAR: [AtomicU8; 4] = decl::zeroed();
 static TEXT: [AtomicU8; 41] = decl::zeroed();
-static S2000: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-    0,
-    DataType::UInt32,
-    Access::RW,
-    &U32_VAR,
-    None,
-)];
+cop::od_ram!(static S2000, U32_VAR: u32 => UInt32, RW);
 static S2001: [ObdSubEntry; 1] = [ObdSubEntry::ram_string(0, Access::RW, &TEXT, c"")];
 static S2002: [ObdSubEntry; 1] = [ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[0x5A])];
 static SERVER_MAN: [ObdEntry; 3] = [

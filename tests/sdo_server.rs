@@ -10,7 +10,7 @@ use cop::ccm::Stack;
 use cop::config::{SDOS_BUFFER_SIZE, SDOS_DEFAULT_TIMEOUT};
 use cop::error::{CopKernel, SdoAbort};
 use cop::event::NmtState;
-use cop::ffi::od_table::ObdCbParam;
+use cop::od::table::ObdCbParam;
 use cop::od::{
     Access, ByteOrder, DataType, ObdEntry, ObdSubEntry, ObdVarEntry, ObjectDictionary, decl, event,
 };
@@ -33,13 +33,6 @@ const LONG: usize = if SDOS_BUFFER_SIZE < 250 {
 } else {
     250
 };
-
-const fn limits_u16(default: u16, low: u16, high: u16) -> [u8; 6] {
-    let d = default.to_ne_bytes();
-    let l = low.to_ne_bytes();
-    let h = high.to_ne_bytes();
-    [d[0], d[1], l[0], l[1], h[0], h[1]]
-}
 
 const fn array_of(access: Access) -> Access {
     Access(access.0 | Access::ARRAY)
@@ -89,22 +82,8 @@ unsafe extern "C" fn refusing_callback(param: *mut ObdCbParam) -> u32 {
 /// | 0x6401 | analogue inputs, array of 2 I16, read-only, 0x6401.1 = 0x1234 |
 macro_rules! test_od {
     () => {{
-        static DEVICE_TYPE: [u8; 4] = 0x0000_0191u32.to_ne_bytes();
-        static S1000: [ObdSubEntry; 1] = [ObdSubEntry::rom(
-            0,
-            DataType::UInt32,
-            Access::R,
-            &DEVICE_TYPE,
-        )];
-        static HB: [AtomicU8; 2] = decl::zeroed();
-        static HB_DEF: [u8; 2] = 0u16.to_ne_bytes();
-        static S1017: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-            0,
-            DataType::UInt16,
-            Access::SRW,
-            &HB,
-            Some(&HB_DEF),
-        )];
+        cop::od_rom!(static S1000: u32 = 0x0000_0191 => UInt32, R);
+        cop::od_ram!(static S1017, HB: u16 = 0 => UInt16, SRW);
         static ID_COUNT: [u8; 1] = [4];
         static VENDOR: [u8; 4] = 0x0000_0147u32.to_ne_bytes();
         static PRODUCT: [u8; 4] = 0x0000_1234u32.to_ne_bytes();
@@ -130,15 +109,7 @@ macro_rules! test_od {
             DOMAIN_LEN as u32,
             None,
         )];
-        static RANGED: [AtomicU8; 2] = decl::zeroed();
-        static RANGED_LIMITS: [u8; 6] = limits_u16(100, 10, 1000);
-        static S2002: [ObdSubEntry; 1] = [ObdSubEntry::ram_range(
-            0,
-            DataType::UInt16,
-            Access::RW,
-            &RANGED,
-            &RANGED_LIMITS,
-        )];
+        cop::od_ram!(static S2002, RANGED: u16 = 100 => UInt16, RW, range(10, 1000));
         static RO: [AtomicU8; 4] = decl::init(0xCAFE_BABEu32.to_ne_bytes());
         static S2003: [ObdSubEntry; 1] =
             [ObdSubEntry::ram(0, DataType::UInt32, Access::R, &RO, None)];
@@ -1014,13 +985,7 @@ macro_rules! od_with_1200 {
             ObdSubEntry::ram(1, DataType::UInt32, Access::RW, &RX, Some(&RX_DEF)),
             ObdSubEntry::ram(2, DataType::UInt32, Access::RW, &TX, Some(&TX_DEF)),
         ];
-        static DEVICE_TYPE: [u8; 4] = 0x0000_0191u32.to_ne_bytes();
-        static S1000: [ObdSubEntry; 1] = [ObdSubEntry::rom(
-            0,
-            DataType::UInt32,
-            Access::R,
-            &DEVICE_TYPE,
-        )];
+        cop::od_rom!(static S1000: u32 = 0x0000_0191 => UInt32, R);
         static GENERIC: [ObdEntry; 2] = [
             ObdEntry::new(0x1000, &S1000, None),
             ObdEntry::new(0x1200, &S1200, None),

@@ -27,8 +27,8 @@ sizes! {
     COP_SIZEOF_SDO_SERVER: cop::sdo::SdoServer;
     COP_SIZEOF_SDO_CLIENT: cop::sdo::SdoClient;
     COP_SIZEOF_ACTION_QUEUE: cop::event::ActionQueue;
-    COP_SIZEOF_HBC: cop::hbc::HeartbeatConsumer;
-    COP_SIZEOF_NMTM: cop::nmtm::NmtMaster;
+    COP_SIZEOF_HBC: cop::heartbeat::HeartbeatConsumer;
+    COP_SIZEOF_NMTM: cop::nmt::NmtMaster;
     COP_SIZEOF_EMCY: cop::emcy::EmcyProducer;
     COP_SIZEOF_OD: cop::od::ObjectDictionary;
 }

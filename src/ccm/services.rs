@@ -1,19 +1,20 @@
 //! The stack's API for the smaller CCM services: emergency consumer,
 //! pre-defined error field, life guarding slave, SYNC producer, TIME
 //! producer and store / restore. Each service's rules are documented in its
-//! module ([`crate::emcc`], [`crate::emcy`], [`crate::lgs`],
-//! [`crate::syncp`], [`crate::wire::time`], [`crate::store`]); this file
+//! module ([`crate::emcy`], [`crate::nmt::lifeguard`], [`crate::sync`],
+//! [`crate::wire::time`], [`crate::store`]); this file
 //! connects them to the dictionary, the NMT state and the other modules.
 
 use super::Stack;
-use crate::emcc::EmcyConsumer;
+use crate::emcy::EmcyConsumer;
+use crate::emcy::producer::{self as emcp, ERROR_FIELD_INDEX, ERROR_REGISTER_INDEX};
 use crate::error::{CopKernel, CopResult};
 use crate::event::NmtState;
-use crate::lgs::{self, LifeGuardSlave};
+use crate::nmt::lifeguard::{self as lgs, LifeGuardSlave};
 use crate::od::ByteOrder;
 use crate::port::{CanId, CanPort, Priority, Ticks};
 use crate::store::{self, StoreRestore};
-use crate::syncp::{self, SyncProducer};
+use crate::sync::producer::{self as syncp, SyncProducer};
 use crate::wire::emcy::Emergency;
 use crate::wire::pdo::{COB_INVALID, COB_NO_RTR};
 use crate::wire::time::{self, TimeOfDay};
@@ -66,10 +67,10 @@ impl Stack {
     /// resets 0x1001. kCopObdIndexNotExist when the dictionary has no
     /// 0x1003 (nothing changes).
     pub fn clear_error_field(&mut self) -> CopResult {
-        if self.od.find_entry(crate::emcy::ERROR_FIELD_INDEX).is_none() {
+        if self.od.find_entry(ERROR_FIELD_INDEX).is_none() {
             return Err(CopKernel::ObdIndexNotExist);
         }
-        crate::emcy::clear_error_field(&self.od);
+        emcp::clear_error_field(&self.od);
         Ok(())
     }
 
@@ -131,7 +132,7 @@ impl Stack {
         }
         let register = self
             .od
-            .read_uint(crate::emcy::ERROR_REGISTER_INDEX, 0)
+            .read_uint(ERROR_REGISTER_INDEX, 0)
             .map_or(0, |v| v as u8);
         let e = Emergency {
             code: lgs::EMCY_LIFE_GUARD,
@@ -139,7 +140,7 @@ impl Stack {
             manufacturer: [0; 5],
         };
         if self.state == NmtState::Stopped {
-            crate::emcy::record(&self.od, &e);
+            emcp::record(&self.od, &e);
         } else {
             // A full inhibit-time queue or a disabled producer loses the
             // frame; the error is recorded in 0x1001 / 0x1003 either way.

@@ -1,48 +1,18 @@
 //! Stack-level tests: start-up sequence, NMT commands, heartbeat, node
 //! guarding, object access through the stack.
 
-use core::sync::atomic::AtomicU8;
-
 use super::*;
-use crate::od::{Access, DataType, ObdEntry, ObdSubEntry, decl};
+use crate::od::{ObdEntry, decl};
 use crate::port::{CanFrame, CanId};
 use crate::sim::SimBus;
 
-static DEVICE_TYPE: [u8; 4] = 0x0001_0191u32.to_ne_bytes();
-static S1000: [ObdSubEntry; 1] = [ObdSubEntry::rom(
-    0,
-    DataType::UInt32,
-    Access::R,
-    &DEVICE_TYPE,
-)];
+crate::od_rom!(static S1000: u32 = 0x0001_0191 => UInt32, R);
 
-static ERR_REG: [AtomicU8; 1] = decl::zeroed();
-static S1001: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-    0,
-    DataType::UInt8,
-    Access::R,
-    &ERR_REG,
-    Some(&[0]),
-)];
+crate::od_ram!(static S1001, ERR_REG: u8 = 0 => UInt8, R);
 
-static HB_TIME: [AtomicU8; 2] = decl::zeroed();
-static HB_DEF: [u8; 2] = 100u16.to_ne_bytes();
-static S1017: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-    0,
-    DataType::UInt16,
-    Access::SRW,
-    &HB_TIME,
-    Some(&HB_DEF),
-)];
+crate::od_ram!(static S1017, HB_TIME: u16 = 100 => UInt16, SRW);
 
-static APP_VAR: [AtomicU8; 1] = decl::zeroed();
-static S2000: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-    0,
-    DataType::UInt8,
-    Access::RW,
-    &APP_VAR,
-    Some(&[7]),
-)];
+crate::od_ram!(static S2000, APP_VAR: u8 = 7 => UInt8, RW);
 
 static GENERIC: [ObdEntry; 3] = [
     ObdEntry::new(0x1000, &S1000, None),

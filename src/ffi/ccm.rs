@@ -9,28 +9,21 @@
 //! return `kCopNoResource`.
 
 use core::ffi::c_void;
-use core::sync::atomic::AtomicU8;
 
+use super::callbacks::Callbacks;
 use super::driver::{self, CdrvPort, TgtClock};
-use super::global::{self, Instance};
-use super::od_table::{self, Storage};
+use super::global::{self, Instance, code};
+use super::ptr::{self, c_try};
 use super::types::*;
 use crate::ccm::{NmtCommand, Stack};
 use crate::error::{CopKernel, CopResult, to_code};
-use crate::od::{ByteOrder, ObjectDictionary};
+use crate::od::{ByteOrder, ObjectDictionary, Storage};
 use crate::port::Clock;
 use crate::wire::emcy::Emergency;
 
 /// Version word of this library: major, minor, release
 /// (`COP_STACK_VERSION` layout: bits 0-7 major, 8-15 minor, 16-31 release).
 pub const STACK_VERSION: u32 = 5 | (60 << 8) | (1 << 16);
-
-fn code(r: Result<CopResult, CopKernel>) -> tCopKernel {
-    match r {
-        Ok(inner) => to_code(inner),
-        Err(e) => e.code(),
-    }
-}
 
 /// `CopGetStackVersion`: the version word (see `COP_GET_MAJOR_VERSION`).
 #[unsafe(no_mangle)]
@@ -61,11 +54,8 @@ pub unsafe extern "C" fn CcmInitCANopen(
     FirstCall_p: tCcmInitCall,
 ) -> tCopKernel {
     let _ = FirstCall_p; // ignored in a single-instance build (cop.h)
-    if pInitParam_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
-    // SAFETY: checked for NULL; the caller provides a valid structure.
-    let p = unsafe { *pInitParam_p };
+    // SAFETY: the caller's contract (NULL or a valid tCcmInitParam).
+    let p = c_try!(unsafe { ptr::read(pInitParam_p) });
     match init(&p) {
         Ok(()) => {
             global::pump(|i, now| i.stack.drain(&mut i.port, now));
@@ -95,20 +85,17 @@ fn init(p: &tCcmInitParam) -> CopResult {
     // 0xFFFF (or NULL for an absent part).
     let (generic, man, dev, usr) = unsafe {
         (
-            od_table::c_table(ram.m_pGenericPart),
-            od_table::c_table(ram.m_pManufacturerPart),
-            od_table::c_table(ram.m_pDevicePart),
-            od_table::c_table(ram.m_pUserPart),
+            ptr::c_table(ram.m_pGenericPart),
+            ptr::c_table(ram.m_pManufacturerPart),
+            ptr::c_table(ram.m_pDevicePart),
+            ptr::c_table(ram.m_pUserPart),
         )
     };
     let mut od = ObjectDictionary::new(generic, man, dev).map_err(|e| e.code)?;
     od.set_user_part(usr).map_err(|e| e.code)?;
-    let srdo_callbacks = if ram.m_pSrdoCallbacks.is_null() {
-        None
-    } else {
-        // SAFETY: objdef.h points to a static tSrdoAppCallbacks.
-        Some(unsafe { *ram.m_pSrdoCallbacks })
-    };
+    // SAFETY: objdef.h points to a static tSrdoAppCallbacks or leaves
+    // the pointer NULL (no SRDO objects).
+    let srdo_callbacks = unsafe { ptr::read(ram.m_pSrdoCallbacks) }.ok();
     let mut cdrv = tCdrvInitParam {
         m_BaudIndex: p.m_BaudIndex,
         m_pBdiTable: p.m_pBdiTable,
@@ -127,10 +114,10 @@ fn init(p: &tCcmInitParam) -> CopResult {
     global::install(Instance {
         stack,
         port: CdrvPort,
-        callbacks: global::Callbacks {
+        callbacks: Callbacks {
             nmt: p.m_fpNmtEventCallback,
             srdo: srdo_callbacks,
-            ..global::Callbacks::default()
+            ..Callbacks::default()
         },
     })
 }
@@ -192,21 +179,19 @@ pub unsafe extern "C" fn CcmReadObject(
     pDstData_p: *mut c_void,
     pSize_p: *mut tObdSize,
 ) -> tCopKernel {
-    if pDstData_p.is_null() || pSize_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
-    // SAFETY: checked for NULL; the caller owns the size variable.
-    let cap = obd_size_len(unsafe { *pSize_p });
-    // SAFETY: the caller guarantees `cap` writable bytes at pDstData_p.
-    let out = unsafe { core::slice::from_raw_parts_mut(pDstData_p as *mut u8, cap) };
+    // SAFETY: the caller's contract (a size variable, NULL refused).
+    let size = c_try!(unsafe { ptr::out(pSize_p) });
+    // SAFETY: the caller's contract (`*pSize_p` writable bytes; NULL
+    // refused).
+    let out = c_try!(unsafe { ptr::bytes_mut(pDstData_p, obd_size_len(size.get())) });
     let r = global::with(|i| {
         i.stack
             .read_object(wIndex_p, bSubindex_p, ByteOrder::Native, out)
     });
     match r {
         Ok(Ok(n)) => {
-            // SAFETY: as above; n <= cap fits tObdSize.
-            unsafe { *pSize_p = n as tObdSize };
+            // n <= the buffer's size, which came as a tObdSize.
+            size.set(n as tObdSize);
             CopKernel::Successful.code()
         }
         Ok(Err(e)) => e.kernel.code(),
@@ -234,16 +219,9 @@ pub unsafe extern "C" fn CcmWriteObject(
     pSrcData_p: *const c_void,
     Size_p: tObdSize,
 ) -> tCopKernel {
-    let n = obd_size_len(Size_p);
-    if pSrcData_p.is_null() && n > 0 {
-        return CopKernel::InvalidParam.code();
-    }
-    let data: &[u8] = if n == 0 {
-        &[]
-    } else {
-        // SAFETY: the caller guarantees n readable bytes.
-        unsafe { core::slice::from_raw_parts(pSrcData_p as *const u8, n) }
-    };
+    // SAFETY: the caller's contract (`Size_p` readable bytes).
+    let data =
+        c_try!(unsafe { ptr::slice_or_empty(pSrcData_p as *const u8, obd_size_len(Size_p)) });
     let now = TgtClock.now();
     let r = global::with(|i| {
         i.stack
@@ -315,11 +293,8 @@ pub extern "C" fn CcmConfigEmcp(dwEmcpProducerCobId_p: DWORD) -> tCopKernel {
 /// `pEmcpParam_p` must be NULL or point to a valid `tEmcParam`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmSendEmergency(pEmcpParam_p: *const tEmcParam) -> tCopKernel {
-    if pEmcpParam_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
-    // SAFETY: checked for NULL.
-    let p = unsafe { *pEmcpParam_p };
+    // SAFETY: the caller's contract (NULL or a valid tEmcParam).
+    let p = c_try!(unsafe { ptr::read(pEmcpParam_p) });
     let e = Emergency {
         code: p.m_wEmcyErrorCode,
         register: p.m_bErrorRegister,
@@ -346,11 +321,8 @@ pub unsafe extern "C" fn CcmDefineVarTab(
     pVarTab_p: *const tVarParam,
     wNumOfVars_p: WORD,
 ) -> tCopKernel {
-    if pVarTab_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
-    // SAFETY: the caller provides wNumOfVars_p entries.
-    let tab = unsafe { core::slice::from_raw_parts(pVarTab_p, usize::from(wNumOfVars_p)) };
+    // SAFETY: the caller's contract (wNumOfVars_p entries; NULL refused).
+    let tab = c_try!(unsafe { ptr::slice(pVarTab_p, usize::from(wNumOfVars_p)) });
     code(global::with(|i| {
         for v in tab {
             define_var(i.stack.od(), v)?;
@@ -392,14 +364,4 @@ fn define_var(od: &ObjectDictionary, v: &tVarParam) -> CopResult {
         entry.m_pArg.store(v.m_pArg, Relaxed);
     }
     Ok(())
-}
-
-/// Turns an application pointer into a shared byte view (SRDO variable
-/// fields, mapped-variable pointers).
-///
-/// # Safety
-/// `p` must be valid for `len` bytes for the rest of the program.
-pub(crate) unsafe fn static_bytes(p: *mut c_void, len: usize) -> &'static [AtomicU8] {
-    // SAFETY: guaranteed by the caller; AtomicU8 has the layout of u8.
-    unsafe { core::slice::from_raw_parts(p as *const AtomicU8, len) }
 }

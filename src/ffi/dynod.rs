@@ -55,7 +55,6 @@ use core::mem::{align_of, size_of};
 use core::sync::atomic::{AtomicBool, AtomicU8, Ordering};
 
 use super::global;
-use super::od_table::{ObdEntry, ObdSubEntry};
 use super::types::{BYTE, DWORD, tCopKernel};
 use crate::ccm::Stack;
 use crate::error::CopKernel;
@@ -63,6 +62,7 @@ use crate::od::Part;
 use crate::od::dcf::{Container, HEADER_SIZE};
 use crate::od::dynamic::{BuildInfo, Initial, Installed, NewSub, Place, Plan, image_overlaps_in};
 use crate::od::value;
+use crate::od::{ObdEntry, ObdSubEntry};
 use crate::port::{CanPort, Clock, Ticks};
 
 /// `tProcessImageDscrpt` (ccmdyn.h): the process image the application
@@ -637,7 +637,7 @@ pub unsafe extern "C" fn DynBuildOd(
             // SAFETY: the caller hands the image for the lifetime of the
             // dynamic OD (documented above).
             Some(unsafe {
-                super::ccm::static_bytes(
+                super::ptr::static_bytes(
                     d.m_pbProcessImage as *mut c_void,
                     d.m_dwProcessImageSize as usize,
                 )

@@ -12,35 +12,13 @@
 use core::cell::{Cell, UnsafeCell};
 use core::mem::MaybeUninit;
 
+use super::callbacks::{self, Callbacks};
 use super::driver::{CdrvPort, TgtClock};
-use super::types::{
-    tAppEmccEventCallback, tAppHbcEventCallback, tAppNmtmEventCallback, tCcmErrorCallback,
-    tCcmNmtEventCallback, tSdocCbFinishParam, tSdocCbFinished, tSrdoAppCallbacks,
-};
+use super::types::tCopKernel;
 use crate::ccm::Stack;
-use crate::error::CopKernel;
+use crate::error::{CopKernel, CopResult, to_code};
 use crate::event::Event;
 use crate::port::Clock;
-
-/// The application's callbacks (function pointers, copied out of the
-/// instance before they are called).
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Callbacks {
-    /// `m_fpNmtEventCallback`.
-    pub nmt: tCcmNmtEventCallback,
-    /// `CcmRegisterErrorCallback`.
-    pub error: tCcmErrorCallback,
-    /// The application's SRDO callbacks (from objdef.h).
-    pub srdo: Option<tSrdoAppCallbacks>,
-    /// `CcmInitNmtmEx`.
-    pub nmtm: tAppNmtmEventCallback,
-    /// `CcmInitHbcEx`.
-    pub hbc: tAppHbcEventCallback,
-    /// `CcmInitEmccEx`.
-    pub emcc: tAppEmccEventCallback,
-    /// Finish callbacks of the SDO client channels (per transfer).
-    pub sdoc: [tSdocCbFinished; crate::sdo::client::CAPACITY],
-}
 
 /// Everything the C API keeps between calls.
 pub struct Instance {
@@ -52,15 +30,7 @@ pub struct Instance {
     pub callbacks: Callbacks,
 }
 
-/// Instances: one on a target. Host builds (`std`) keep several so that a
-/// simulation can run more than one node in one process; the harness
-/// selects the node the next `Ccm*` calls address with
-/// `CopSimSelectInstance`.
-#[cfg(feature = "std")]
-pub const MAX_INSTANCES: usize = 8;
-/// Instances: one on a target.
-#[cfg(not(feature = "std"))]
-pub const MAX_INSTANCES: usize = 1;
+pub use super::MAX_INSTANCES;
 
 struct Global {
     /// The instances' storage. Slot `i` holds an initialised [`Instance`]
@@ -187,75 +157,19 @@ pub fn remove() -> Result<Instance, CopKernel> {
     r
 }
 
-/// Calls the application for one event. Runs with the instance released.
-fn dispatch(ev: Event, cbs: Callbacks) {
-    let srdo = cbs.srdo;
-    match ev {
-        Event::Nmt(e) => {
-            if let Some(cb) = cbs.nmt {
-                // SAFETY: the application's NMT callback from tCcmInitParam.
-                let ret = unsafe { cb(e as u32) };
-                if ret != 0 {
-                    report_error(CopKernel::NmtStateError);
-                }
-            }
-        }
-        Event::SrdoEvent(idx) => {
-            if let Some(cb) = srdo.and_then(|c| c.m_fpSrdoEvent) {
-                // SAFETY: AppSrdoEvent of the application (objdef.h).
-                unsafe { cb(idx) };
-            }
-        }
-        Event::SrdoError(idx, code) => {
-            if let Some(cb) = srdo.and_then(|c| c.m_fpSrdoError) {
-                // SAFETY: AppSrdoError of the application (objdef.h).
-                unsafe { cb(idx, code.code()) };
-            }
-        }
-        Event::Gfc => {
-            if let Some(cb) = srdo.and_then(|c| c.m_fpGfcEvent) {
-                // SAFETY: AppGfcEvent of the application (objdef.h).
-                unsafe { cb() };
-            }
-        }
-        Event::ProgMon(e) => {
-            if let Some(cb) = srdo.and_then(|c| c.m_fpProgMonEvent) {
-                // SAFETY: AppProgMonEvent of the application (objdef.h).
-                unsafe { cb(e as u32) };
-            }
-        }
-        Event::Hbc(node, e) => {
-            if let Some(cb) = cbs.hbc {
-                // SAFETY: the callback registered with CcmInitHbcEx.
-                unsafe { cb(node, e as u32) };
-            }
-        }
-        Event::Nmtm(node, e) => {
-            if let Some(cb) = cbs.nmtm {
-                // SAFETY: the callback registered with CcmInitNmtmEx.
-                unsafe { cb(node, e as u32) };
-            }
-        }
-        Event::SdocFinished {
-            client,
-            state,
-            abort,
-        } => {
-            let slot = usize::from(client.wrapping_sub(crate::sdo::client::CLIENT_BASE_INDEX));
-            if let Some(Some(cb)) = cbs.sdoc.get(slot).copied() {
-                let mut p = tSdocCbFinishParam {
-                    m_wClientIndex: client,
-                    m_SdocState: u32::from(state),
-                    m_dwAbortCode: abort,
-                };
-                // SAFETY: the finish callback given with CcmSdocStartTransfer;
-                // `p` lives for the call.
-                unsafe { cb(&mut p) };
-            }
-        }
-        Event::Emcc(node, e) => super::master::dispatch_emcc(node, e, cbs.emcc),
-        Event::Pdo(commu_index) => super::pdo::dispatch(commu_index),
+/// The `tCopKernel` of a call made through [`with`]: the instance's code
+/// (kCopIllegalInstance, kCopNoResource) or the call's own.
+pub fn code(r: Result<CopResult, CopKernel>) -> tCopKernel {
+    match r {
+        Ok(inner) => to_code(inner),
+        Err(e) => e.code(),
     }
+}
+
+/// Hands out the events an API call may have queued (a dictionary write,
+/// an NMT command, a transmission).
+pub fn drain() {
+    pump(|i, now| i.stack.drain(&mut i.port, now));
 }
 
 /// Reports an error to the callback registered with
@@ -288,6 +202,16 @@ pub fn pump(mut next: impl FnMut(&mut Instance, crate::port::Ticks) -> Option<Ev
     not_handled
 }
 
+/// Hands one event to the application ([`callbacks::dispatch`]) and
+/// reports a refusal through the error callback. One call per event, out of
+/// line, so that the pump of every API function stays small.
+#[inline(never)]
+fn deliver(e: Event, cbs: Callbacks) {
+    if let Some(code) = callbacks::dispatch(e, cbs, current()) {
+        report_error(code);
+    }
+}
+
 fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Option<Event>) -> bool {
     let mut not_handled = false;
     loop {
@@ -296,7 +220,7 @@ fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Optio
         match step {
             Ok(Some((e, cbs))) => {
                 not_handled |= matches!(e, Event::SrdoError(_, CopKernel::SrdoNotHandledInApp));
-                dispatch(e, cbs);
+                deliver(e, cbs);
             }
             _ => break,
         }
@@ -311,9 +235,7 @@ fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Optio
 /// (or when called from inside a callback).
 #[cfg(feature = "std")]
 #[unsafe(no_mangle)]
-pub extern "C" fn CopSimSelectInstance(
-    bInstance_p: super::types::BYTE,
-) -> super::types::tCopKernel {
+pub extern "C" fn CopSimSelectInstance(bInstance_p: super::types::BYTE) -> tCopKernel {
     if select(usize::from(bInstance_p)) {
         CopKernel::Successful.code()
     } else {

@@ -6,39 +6,12 @@
 //! first, kCopIllegalInstance before `CcmInitCANopen`.
 
 use super::driver::TgtClock;
-use super::global::{self, Instance};
+use super::global::{self, Instance, code};
+use super::ptr::{self, c_try};
 use super::types::*;
-use crate::error::{CopKernel, CopResult, to_code};
+use crate::error::CopKernel;
 use crate::port::Clock;
-use crate::wire::emcy::Emergency;
 use crate::wire::nmt::NmtCs;
-
-fn code(r: Result<CopResult, CopKernel>) -> tCopKernel {
-    match r {
-        Ok(inner) => to_code(inner),
-        Err(e) => e.code(),
-    }
-}
-
-/// Hands a received emergency to the callback of `CcmInitEmccEx` as a
-/// `tEmcParam`: error code, error register and the five
-/// manufacturer-specific bytes of the frame; `m_wAdditionalInfo` has no
-/// counterpart in the frame and is 0. The structure lives for the call.
-/// Without a callback (`CcmInitEmcc`) the emergency is not reported.
-pub fn dispatch_emcc(node: u8, e: Emergency, cb: tAppEmccEventCallback) {
-    let Some(cb) = cb else {
-        return;
-    };
-    let mut p = tEmcParam {
-        m_wEmcyErrorCode: e.code,
-        m_bErrorRegister: e.register,
-        m_abManufactErrorCode: e.manufacturer,
-        m_wAdditionalInfo: 0,
-    };
-    // SAFETY: the callback registered with CcmInitEmccEx; `p` lives for
-    // the call.
-    unsafe { cb(node, &mut p) };
-}
 
 /// `CcmInitEmcc`: enables the emergency consumer without an application
 /// callback (any registered by `CcmInitEmccEx` is dropped): emergencies of
@@ -81,16 +54,9 @@ pub unsafe extern "C" fn CcmEmccDefineProducerTab(
     pbProducerTab_p: *const BYTE,
     bNumOfProducer_p: BYTE,
 ) -> tCopKernel {
-    let n = usize::from(bNumOfProducer_p);
-    if pbProducerTab_p.is_null() && n > 0 {
-        return CopKernel::InvalidParam.code();
-    }
-    let nodes: &[u8] = if n == 0 {
-        &[]
-    } else {
-        // SAFETY: the caller guarantees n readable bytes.
-        unsafe { core::slice::from_raw_parts(pbProducerTab_p, n) }
-    };
+    // SAFETY: the caller's contract (bNumOfProducer_p entries).
+    let nodes =
+        c_try!(unsafe { ptr::slice_or_empty(pbProducerTab_p, usize::from(bNumOfProducer_p)) });
     code(global::with(|i| {
         let Instance { stack, port, .. } = i;
         stack.define_emcc_producers(port, nodes)
@@ -128,16 +94,8 @@ pub unsafe extern "C" fn CcmDefineSlaveTab(
     pbSlaveTab_p: *const BYTE,
     bNumOfSlaves_p: BYTE,
 ) -> tCopKernel {
-    let n = usize::from(bNumOfSlaves_p);
-    if pbSlaveTab_p.is_null() && n > 0 {
-        return CopKernel::InvalidParam.code();
-    }
-    let nodes: &[u8] = if n == 0 {
-        &[]
-    } else {
-        // SAFETY: the caller guarantees n readable bytes.
-        unsafe { core::slice::from_raw_parts(pbSlaveTab_p, n) }
-    };
+    // SAFETY: the caller's contract (bNumOfSlaves_p entries).
+    let nodes = c_try!(unsafe { ptr::slice_or_empty(pbSlaveTab_p, usize::from(bNumOfSlaves_p)) });
     code(global::with(|i| i.stack.nmtm_mut().define_slaves(nodes)))
 }
 
@@ -186,11 +144,8 @@ pub unsafe extern "C" fn CcmConfigLgm(
     bNodeId_p: BYTE,
     pSlaveParam_p: *const tNmtmSlaveParam,
 ) -> tCopKernel {
-    if pSlaveParam_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
-    // SAFETY: checked for NULL.
-    let p = unsafe { *pSlaveParam_p };
+    // SAFETY: the caller's contract (NULL or a valid tNmtmSlaveParam).
+    let p = c_try!(unsafe { ptr::read(pSlaveParam_p) });
     let now = TgtClock.now();
     code(global::with(|i| {
         i.stack.nmtm_mut().configure_guarding(
@@ -211,21 +166,17 @@ pub unsafe extern "C" fn CcmNmtmGetSlaveInfo(
     bNodeId_p: BYTE,
     pSlaveInfo_p: *mut tNmtmSlaveInfo,
 ) -> tCopKernel {
-    if pSlaveInfo_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
+    // SAFETY: the caller's contract (NULL or a writable tNmtmSlaveInfo).
+    let out = c_try!(unsafe { ptr::out(pSlaveInfo_p) });
     let r = global::with(|i| i.stack.nmtm().slave_info(bNodeId_p));
     match r {
         Ok(Ok(info)) => {
-            // SAFETY: checked for NULL; the caller owns the structure.
-            unsafe {
-                *pSlaveInfo_p = tNmtmSlaveInfo {
-                    m_bNodeState: info.state,
-                    m_bMissedAnswers: info.misses,
-                    m_wLifeguardTime: info.guard_ms,
-                    m_bLifeguardFactor: info.life_factor,
-                }
-            };
+            out.set(tNmtmSlaveInfo {
+                m_bNodeState: info.state,
+                m_bMissedAnswers: info.misses,
+                m_wLifeguardTime: info.guard_ms,
+                m_bLifeguardFactor: info.life_factor,
+            });
             0
         }
         Ok(Err(e)) | Err(e) => e.code(),
@@ -261,16 +212,9 @@ pub unsafe extern "C" fn CcmHbcDefineProducerTab(
     pbProducerTab_p: *const tHbcProdParam,
     bNumOfProducer_p: BYTE,
 ) -> tCopKernel {
-    let n = usize::from(bNumOfProducer_p);
-    if pbProducerTab_p.is_null() && n > 0 {
-        return CopKernel::InvalidParam.code();
-    }
-    let tab: &[tHbcProdParam] = if n == 0 {
-        &[]
-    } else {
-        // SAFETY: the caller guarantees n entries.
-        unsafe { core::slice::from_raw_parts(pbProducerTab_p, n) }
-    };
+    // SAFETY: the caller's contract (bNumOfProducer_p entries).
+    let tab =
+        c_try!(unsafe { ptr::slice_or_empty(pbProducerTab_p, usize::from(bNumOfProducer_p)) });
     for (k, p) in tab.iter().enumerate() {
         if tab
             .iter()
@@ -289,7 +233,7 @@ pub unsafe extern "C" fn CcmHbcDefineProducerTab(
             let v = (u32::from(p.bProducerNodeId_p) << 16) | u32::from(p.wHeartbeatTime_p);
             i.stack
                 .write_object(
-                    crate::hbc::CONSUMER_TIME_INDEX,
+                    crate::heartbeat::CONSUMER_TIME_INDEX,
                     p.bSubindex_p,
                     crate::od::ByteOrder::Wire,
                     &v.to_le_bytes(),
@@ -317,13 +261,11 @@ pub unsafe extern "C" fn CcmHbcGetNodeState(
     bNodeId_p: BYTE,
     pNodeState_p: *mut BYTE,
 ) -> tCopKernel {
-    if pNodeState_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
+    // SAFETY: the caller's contract (NULL or one writable byte).
+    let out = c_try!(unsafe { ptr::out(pNodeState_p) });
     match global::with(|i| i.stack.hbc().node_state(bNodeId_p)) {
         Ok(Some(s)) => {
-            // SAFETY: checked for NULL.
-            unsafe { *pNodeState_p = s };
+            out.set(s);
             0
         }
         Ok(None) => CopKernel::HbcEntryNotExist.code(),
@@ -345,16 +287,8 @@ pub unsafe extern "C" fn CcmSdocDefineClientTab(
     pClientTab_p: *const tSdocParam,
     bNumOfClients_p: BYTE,
 ) -> tCopKernel {
-    let n = usize::from(bNumOfClients_p);
-    if pClientTab_p.is_null() && n > 0 {
-        return CopKernel::InvalidParam.code();
-    }
-    let tab: &[tSdocParam] = if n == 0 {
-        &[]
-    } else {
-        // SAFETY: the caller guarantees n entries.
-        unsafe { core::slice::from_raw_parts(pClientTab_p, n) }
-    };
+    // SAFETY: the caller's contract (bNumOfClients_p entries).
+    let tab = c_try!(unsafe { ptr::slice_or_empty(pClientTab_p, usize::from(bNumOfClients_p)) });
     code(global::with(|i| {
         for p in tab {
             let mut cp = i.stack.sdoc().param(p.m_wClientIndex).unwrap_or_default();
@@ -412,11 +346,8 @@ pub unsafe extern "C" fn CcmSdocDefineClientTab(
 pub unsafe extern "C" fn CcmSdocStartTransfer(
     pSdoTransParam_p: *const tSdocTransferParam,
 ) -> tCopKernel {
-    if pSdoTransParam_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
-    // SAFETY: checked for NULL.
-    let p = unsafe { *pSdoTransParam_p };
+    // SAFETY: the caller's contract (NULL or a valid tSdocTransferParam).
+    let p = c_try!(unsafe { ptr::read(pSdoTransParam_p) });
     let dir = match p.m_SdocType {
         0 => crate::sdo::client::Direction::Download,
         1 => crate::sdo::client::Direction::Upload,
@@ -424,13 +355,10 @@ pub unsafe extern "C" fn CcmSdocStartTransfer(
         3 => crate::sdo::client::Direction::BlockUpload,
         _ => return CopKernel::SdocInvalidParam.code(),
     };
-    let len = super::types::obd_size_len(p.m_DataLen);
-    if p.m_pData.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
+    let len = obd_size_len(p.m_DataLen);
     // SAFETY: the caller keeps the buffer valid until the transfer ends;
     // the stack drops this view when it does (finish, abort, reset).
-    let buf = unsafe { super::ccm::static_bytes(p.m_pData, len) };
+    let buf = c_try!(unsafe { ptr::lent_bytes(p.m_pData, len) });
     let now = TgtClock.now();
     let mux = crate::wire::sdo::Multiplexer::new(p.m_wObjIndex, p.m_bObjSubIndex);
     code(global::with(|i| {
@@ -475,16 +403,14 @@ pub unsafe extern "C" fn CcmSdocGetState(
     pSdocState_p: *mut tSdocState,
     pdwAbortCode_p: *mut DWORD,
 ) -> tCopKernel {
-    if pSdocState_p.is_null() || pdwAbortCode_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
+    // SAFETY: the caller's contract (NULL or writable).
+    let state = c_try!(unsafe { ptr::out(pSdocState_p) });
+    // SAFETY: as above.
+    let abort_code = c_try!(unsafe { ptr::out(pdwAbortCode_p) });
     match global::with(|i| i.stack.sdoc().state(wClientIndex_p)) {
         Ok(Ok((st, abort))) => {
-            // SAFETY: both checked for NULL.
-            unsafe {
-                *pSdocState_p = st as u32;
-                *pdwAbortCode_p = abort;
-            }
+            state.set(st as u32);
+            abort_code.set(abort);
             0
         }
         Ok(Err(e)) | Err(e) => e.code(),
@@ -502,13 +428,11 @@ pub unsafe extern "C" fn SdocGetTransmittedBytes(
     wClientIndex_p: WORD,
     pdwBytes_p: *mut DWORD,
 ) -> tCopKernel {
-    if pdwBytes_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
+    // SAFETY: the caller's contract (NULL or writable).
+    let out = c_try!(unsafe { ptr::out(pdwBytes_p) });
     match global::with(|i| i.stack.sdoc().transferred(wClientIndex_p)) {
         Ok(Ok(n)) => {
-            // SAFETY: checked for NULL.
-            unsafe { *pdwBytes_p = n };
+            out.set(n);
             0
         }
         Ok(Err(e)) | Err(e) => e.code(),

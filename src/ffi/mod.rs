@@ -1,24 +1,42 @@
-//! The C ABI: every `extern "C"` item, every raw pointer and every `unsafe`
-//! block of the library lives below this module.
+//! The C ABI: every exported function, every C name and every conversion
+//! of a C pointer lives below this module (the dictionary's table format,
+//! which C and Rust share, is [`crate::od::table`]).
+//!
+//! Inside, the imports go one way: the exported functions ([`ccm`],
+//! [`master`], [`pdo`], [`services`], [`srdo`], [`dynod`]) use the instance
+//! registry ([`global`]), the callback adapter ([`callbacks`]), the pointer
+//! helpers (`ptr`) and the driver ([`driver`]); the registry hands events
+//! to the callback adapter; neither imports an exported function.
 
 #![allow(non_snake_case, non_camel_case_types, non_upper_case_globals)]
 
+pub mod callbacks;
 pub mod ccm;
 pub mod driver;
 pub mod dynod;
 pub mod global;
 pub mod master;
-pub mod od_table;
 
 #[cfg(test)]
 mod od_callback_tests;
 pub mod pdo;
+mod ptr;
 pub mod services;
 pub mod srdo;
 pub mod stack_callbacks;
 pub mod types;
 
 include!(concat!(env!("OUT_DIR"), "/abi_symbol.rs"));
+
+/// Instances: one on a target. Host builds (`std`) keep several so that a
+/// simulation can run more than one node in one process; the harness
+/// selects the node the next `Ccm*` calls address with
+/// `CopSimSelectInstance`.
+#[cfg(feature = "std")]
+pub const MAX_INSTANCES: usize = 8;
+/// Instances: one on a target.
+#[cfg(not(feature = "std"))]
+pub const MAX_INSTANCES: usize = 1;
 
 #[cfg(not(any(test, feature = "std")))]
 #[panic_handler]

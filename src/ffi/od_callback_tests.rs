@@ -6,7 +6,7 @@ use core::sync::atomic::AtomicU8;
 use std::sync::Mutex;
 
 use crate::error::{CopKernel, OdError};
-use crate::ffi::od_table::{ObdCbParam, ObdVStringDomain};
+use crate::od::table::{ObdCbParam, ObdVStringDomain};
 use crate::od::{
     Access, ByteOrder, DataType, NoHooks, ObdEntry, ObdSize, ObdSubEntry, ObdVarEntry,
     ObjectDictionary, decl, event,
@@ -50,17 +50,10 @@ unsafe extern "C" fn record(p: *mut ObdCbParam) -> u32 {
     0
 }
 
-static V: [AtomicU8; 1] = decl::zeroed();
 static SMALL_BUF: [AtomicU8; 4] = decl::zeroed();
 static BIG_BUF: [AtomicU8; 16] = decl::zeroed();
 static DOMAIN: ObdVarEntry = ObdVarEntry::new();
-static S2000: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-    0,
-    DataType::UInt8,
-    Access::RW,
-    &V,
-    Some(&[0]),
-)];
+crate::od_ram!(static S2000, V: u8 = 0 => UInt8, RW);
 static S2001: [ObdSubEntry; 1] = [ObdSubEntry::var(
     0,
     DataType::Domain,

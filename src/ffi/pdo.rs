@@ -11,20 +11,17 @@
 //! `kCopNoResource` when called from inside an OBD callback.
 
 use core::ffi::c_void;
-use core::sync::atomic::{AtomicPtr, Ordering};
 
+use super::callbacks::{pdo_slot, set_pdo};
 use super::driver::TgtClock;
-use super::global::{self, MAX_INSTANCES};
+use super::global::{self, code, drain};
+use super::ptr::{self, c_try};
 use super::types::{BYTE, DWORD, WORD, tCopKernel};
-use crate::config::{PDO_MAX_RXPDO_IN_OBD, PDO_MAX_TXPDO_IN_OBD};
-use crate::error::{CopKernel, CopResult, to_code};
-use crate::pdo::{Direction, PDO_MAX_MAPPENTRIES, PdoIndex, PdoParam, Role, StaticPdoParam};
+use crate::error::CopKernel;
+use crate::pdo::{Direction, PDO_MAX_MAPPENTRIES, PdoParam, StaticPdoParam};
 use crate::port::Clock;
 
-/// `tPdoCallback` (single-instance form): called with the communication
-/// index after an RPDO's data reached its variables or after a TPDO was
-/// sent.
-pub type tPdoCallback = Option<unsafe extern "C" fn(wPdoCommuIndex_p: WORD) -> tCopKernel>;
+pub use super::types::tPdoCallback;
 
 /// `kPdoTypeSend`.
 pub const kPdoTypeSend: BYTE = 0;
@@ -166,74 +163,6 @@ static_assertions::const_assert_eq!(
 static_assertions::const_assert_eq!(core::mem::size_of::<tPdoStaticParam>(), 24);
 static_assertions::assert_eq_size!(tPdoCallback, *const c_void);
 
-/// PDO callbacks: one slot per RPDO (0x1400+n at n) and TPDO (0x1800+n at
-/// `PDO_MAX_RXPDO_IN_OBD + n`), per instance. Function pointers are kept
-/// as atomic pointers so that the table needs no lock.
-const SLOTS: usize = PDO_MAX_RXPDO_IN_OBD + PDO_MAX_TXPDO_IN_OBD;
-static CALLBACKS: [[AtomicPtr<c_void>; SLOTS]; MAX_INSTANCES] =
-    [const { [const { AtomicPtr::new(core::ptr::null_mut()) }; SLOTS] }; MAX_INSTANCES];
-
-/// The callback slot of a communication index this build serves.
-fn slot_of(commu_index: u16) -> Option<usize> {
-    let p = PdoIndex::of(commu_index).filter(|p| p.role == Role::Commu)?;
-    let n = usize::from(p.number);
-    match p.dir {
-        Direction::Rx => (n < PDO_MAX_RXPDO_IN_OBD).then_some(n),
-        Direction::Tx => (n < PDO_MAX_TXPDO_IN_OBD).then_some(PDO_MAX_RXPDO_IN_OBD + n),
-    }
-}
-
-fn set_callback(commu_index: u16, cb: tPdoCallback) {
-    let Some(slot) = slot_of(commu_index) else {
-        return;
-    };
-    let p = cb.map_or(core::ptr::null_mut(), |f| f as *mut c_void);
-    if let Some(a) = CALLBACKS
-        .get(global::current())
-        .and_then(|row| row.get(slot))
-    {
-        a.store(p, Ordering::Relaxed);
-    }
-}
-
-fn callback(commu_index: u16) -> tPdoCallback {
-    let slot = slot_of(commu_index)?;
-    let p = CALLBACKS
-        .get(global::current())?
-        .get(slot)?
-        .load(Ordering::Relaxed);
-    if p.is_null() {
-        return None;
-    }
-    // SAFETY: non-NULL entries were stored by `set_callback` from a
-    // tPdoCallback function pointer of the application.
-    Some(unsafe {
-        core::mem::transmute::<*mut c_void, unsafe extern "C" fn(WORD) -> tCopKernel>(p)
-    })
-}
-
-/// Calls the PDO's callback for `Event::Pdo`. Runs with the instance
-/// released, so the callback may call any `Ccm*` function. Its return
-/// value is not evaluated (the PDO has already been processed).
-pub fn dispatch(commu_index: u16) {
-    if let Some(cb) = callback(commu_index) {
-        // SAFETY: the application's tPdoCallback given with CcmDefinePdoTab
-        // or CcmDefineStaticPdoTab.
-        let _ = unsafe { cb(commu_index) };
-    }
-}
-
-fn code(r: Result<CopResult, CopKernel>) -> tCopKernel {
-    match r {
-        Ok(inner) => to_code(inner),
-        Err(e) => e.code(),
-    }
-}
-
-fn drain() {
-    global::pump(|i, now| i.stack.drain(&mut i.port, now));
-}
-
 /// Converts one `tPdoParam` into the core's definition (pure, so that the
 /// valid-flag rules can be tested without a driver).
 pub fn pdo_param(p: &tPdoParam) -> Result<PdoParam<'_>, CopKernel> {
@@ -286,20 +215,17 @@ pub unsafe extern "C" fn CcmDefinePdoTab(
     pPdoTab_p: *const tPdoParam,
     wNumOfPdos_p: WORD,
 ) -> tCopKernel {
-    if pPdoTab_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
-    // SAFETY: checked for NULL; the caller provides wNumOfPdos_p entries.
-    let tab = unsafe { core::slice::from_raw_parts(pPdoTab_p, usize::from(wNumOfPdos_p)) };
+    // SAFETY: the caller's contract (wNumOfPdos_p entries; NULL refused).
+    let tab = c_try!(unsafe { ptr::slice(pPdoTab_p, usize::from(wNumOfPdos_p)) });
     let now = TgtClock.now();
     let r = global::with(|i| {
         for p in tab {
             let param = pdo_param(p)?;
             if p.m_bValidFlag & pdo_valid::CALLBACK != 0 {
-                if slot_of(p.m_wPdoCommuIndex).is_none() {
+                if pdo_slot(p.m_wPdoCommuIndex).is_none() {
                     return Err(CopKernel::PdoNotExist);
                 }
-                set_callback(p.m_wPdoCommuIndex, p.m_fpCallback);
+                set_pdo(p.m_wPdoCommuIndex, p.m_fpCallback, global::current());
             }
             i.stack.define_pdo(&param, now)?;
         }
@@ -327,11 +253,8 @@ pub unsafe extern "C" fn CcmDefineStaticPdoTab(
     pPdoTab_p: *const tPdoStaticParam,
     wNumOfPdos_p: WORD,
 ) -> tCopKernel {
-    if pPdoTab_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
-    // SAFETY: checked for NULL; the caller provides wNumOfPdos_p entries.
-    let tab = unsafe { core::slice::from_raw_parts(pPdoTab_p, usize::from(wNumOfPdos_p)) };
+    // SAFETY: the caller's contract (wNumOfPdos_p entries; NULL refused).
+    let tab = c_try!(unsafe { ptr::slice(pPdoTab_p, usize::from(wNumOfPdos_p)) });
     for p in tab {
         if p.m_pVarData.is_null() && p.m_bSize > 0 {
             return CopKernel::InvalidParam.code();
@@ -346,14 +269,14 @@ pub unsafe extern "C" fn CcmDefineStaticPdoTab(
             let data = if p.m_bSize == 0 {
                 &[]
             } else {
-                // SAFETY: checked non-NULL above; the caller guarantees
-                // m_bSize bytes that outlive the stack.
-                unsafe { super::ccm::static_bytes(p.m_pVarData, usize::from(p.m_bSize)) }
+                // SAFETY: the caller's contract (m_bSize bytes that outlive
+                // the stack; NULL was refused above).
+                unsafe { ptr::lent_bytes(p.m_pVarData, usize::from(p.m_bSize)) }?
             };
-            if slot_of(p.m_wPdoCommuIndex).is_none() {
+            if pdo_slot(p.m_wPdoCommuIndex).is_none() {
                 return Err(CopKernel::PdoNotExist);
             }
-            set_callback(p.m_wPdoCommuIndex, p.m_fpCallback);
+            set_pdo(p.m_wPdoCommuIndex, p.m_fpCallback, global::current());
             let param = StaticPdoParam {
                 commu_index: p.m_wPdoCommuIndex,
                 cob_id: p.m_dwCanId,
@@ -401,10 +324,7 @@ pub extern "C" fn CcmSignalCheckVar() -> tCopKernel {
 /// (no valid TPDO maps the variable).
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmSignalVar(pVar_p: *mut c_void) -> tCopKernel {
-    if pVar_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
-    let addr = pVar_p as usize;
+    let addr = c_try!(ptr::address(pVar_p));
     code(global::with(|i| i.stack.signal_var_at(addr)))
 }
 
@@ -536,23 +456,5 @@ mod tests {
         // Without kPdoValidNrOfEntries the count field is not looked at.
         p.m_bValidFlag = pdo_valid::CAN_ID;
         assert!(pdo_param(&p).is_ok());
-    }
-
-    #[test]
-    fn callback_slots_cover_the_configured_pdos() {
-        assert_eq!(slot_of(0x1400), Some(0));
-        assert_eq!(slot_of(0x1800), Some(PDO_MAX_RXPDO_IN_OBD));
-        assert_eq!(slot_of(0x1600), None, "mapping index");
-        assert_eq!(slot_of(0x1400 + PDO_MAX_RXPDO_IN_OBD as u16), None);
-        assert_eq!(slot_of(0x1300), None);
-    }
-
-    #[test]
-    fn callback_table_round_trip() {
-        set_callback(0x1801, Some(cb));
-        assert!(callback(0x1801).is_some());
-        assert!(callback(0x1800).is_none());
-        set_callback(0x1801, None);
-        assert!(callback(0x1801).is_none());
     }
 }

@@ -9,23 +9,12 @@
 //! inside an OBD callback.
 
 use super::driver::TgtClock;
-use super::global::{self, Instance};
+use super::global::{self, Instance, code, drain};
+use super::ptr::{self, c_try};
 use super::types::*;
-use crate::error::{CopKernel, CopResult, to_code};
+use crate::error::CopKernel;
 use crate::port::Clock;
 use crate::wire::time::TimeOfDay;
-
-fn code(r: Result<CopResult, CopKernel>) -> tCopKernel {
-    match r {
-        Ok(inner) => to_code(inner),
-        Err(e) => e.code(),
-    }
-}
-
-/// Hands out events a dictionary write may have queued.
-fn drain() {
-    global::pump(|i, now| i.stack.drain(&mut i.port, now));
-}
 
 /// `CcmClearPreDefinedErrorField`: empties the pre-defined error field
 /// 0x1003 (sub 0 = 0, entries 0) and resets the error register 0x1001, as
@@ -108,11 +97,8 @@ pub unsafe extern "C" fn CcmTspSend(
     dwTimeStampId: DWORD,
     pTimeOfDay_p: *const tTimeOfDay,
 ) -> tCopKernel {
-    if pTimeOfDay_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
-    // SAFETY: checked for NULL; the caller provides a valid structure.
-    let p = unsafe { *pTimeOfDay_p };
+    // SAFETY: the caller's contract (NULL or a valid tTimeOfDay).
+    let p = c_try!(unsafe { ptr::read(pTimeOfDay_p) });
     let Some(t) = TimeOfDay::new(p.m_dwMs, p.m_wDays) else {
         return CopKernel::InvalidParam.code();
     };

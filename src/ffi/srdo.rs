@@ -12,22 +12,12 @@
 use core::ffi::c_void;
 
 use super::driver::TgtClock;
-use super::global::{self, Instance};
+use super::global::{self, Instance, code, drain};
+use super::ptr::{self, Out, c_try};
 use super::types::*;
-use crate::error::{CopKernel, CopResult, to_code};
+use crate::error::CopKernel;
 use crate::event::{NmtEvent, NmtState};
 use crate::port::Clock;
-
-fn code(r: Result<CopResult, CopKernel>) -> tCopKernel {
-    match r {
-        Ok(inner) => to_code(inner),
-        Err(e) => e.code(),
-    }
-}
-
-fn drain() {
-    global::pump(|i, now| i.stack.drain(&mut i.port, now));
-}
 
 /// `CcmSendSrdo`: sends one transmit SRDO (`wSrdoCommuIndex_p` =
 /// 0x1301..0x1340) or, with 0, every transmit SRDO in index order. Before
@@ -98,14 +88,12 @@ pub extern "C" fn SrdoSend(wSrdoCommuIndex_p: WORD) -> tCopKernel {
 /// `pwCommuIndex_p` must be NULL or valid for writing a WORD.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmCheckSrdoConfig(pwCommuIndex_p: *mut WORD) -> tCopKernel {
-    if pwCommuIndex_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
+    // SAFETY: the caller's contract (NULL or a writable WORD).
+    let out = c_try!(unsafe { ptr::out(pwCommuIndex_p) });
     match global::with(|i| i.stack.srdo().check_config(i.stack.od())) {
         Ok(Ok(())) => 0,
         Ok(Err((e, idx))) => {
-            // SAFETY: checked for NULL.
-            unsafe { *pwCommuIndex_p = idx };
+            out.set(idx);
             e.code()
         }
         Err(e) => e.code(),
@@ -153,13 +141,11 @@ pub unsafe extern "C" fn CcmGetSrdoState(
     pbSrdoState_p: *mut BYTE,
     wSrdoCommuIndex_p: WORD,
 ) -> tCopKernel {
-    if pbSrdoState_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
+    // SAFETY: the caller's contract (NULL or a writable byte).
+    let out = c_try!(unsafe { ptr::out(pbSrdoState_p) });
     match global::with(|i| i.stack.srdo().get_state(wSrdoCommuIndex_p)) {
         Ok(Ok(s)) => {
-            // SAFETY: checked for NULL.
-            unsafe { *pbSrdoState_p = s };
+            out.set(s);
             0
         }
         Ok(Err(e)) | Err(e) => e.code(),
@@ -196,30 +182,23 @@ pub extern "C" fn SrdoSetState(bSrdoState_p: BYTE, wSrdoCommuIndex_p: WORD) -> t
     CcmSetSrdoState(bSrdoState_p, wSrdoCommuIndex_p)
 }
 
-fn get_commu(idx: WORD, p: *mut tSrdoCommuParam) -> tCopKernel {
-    if p.is_null() {
-        return 0;
-    }
+/// Writes the communication parameters of `idx` to `p`.
+fn get_commu(idx: WORD, p: Out<tSrdoCommuParam>) -> tCopKernel {
     match global::with(|i| i.stack.srdo().commu_param(i.stack.od(), idx)) {
         Ok(Ok(c)) => {
-            // SAFETY: checked for NULL; the caller owns the structure.
-            unsafe {
-                *p = tSrdoCommuParam {
-                    m_bDirection: c.direction,
-                    m_wSct: c.sct_ms,
-                }
-            };
+            p.set(tSrdoCommuParam {
+                m_bDirection: c.direction,
+                m_wSct: c.sct_ms,
+            });
             0
         }
         Ok(Err(e)) | Err(e) => e.code(),
     }
 }
 
+/// Writes the mapping parameters of `idx` to `p`.
 #[cfg(not(srdo_static_mapping))]
-fn get_mapp(idx: WORD, p: *mut tSrdoMappParam) -> tCopKernel {
-    if p.is_null() {
-        return 0;
-    }
+fn get_mapp(idx: WORD, p: Out<tSrdoMappParam>) -> tCopKernel {
     match global::with(|i| i.stack.srdo().mapp_param(i.stack.od(), idx)) {
         Ok(Ok(m)) => {
             let mut out = tSrdoMappParam {
@@ -229,8 +208,7 @@ fn get_mapp(idx: WORD, p: *mut tSrdoMappParam) -> tCopKernel {
             for (o, v) in out.m_apMappedVariable.iter_mut().zip(m.vars.iter()) {
                 *o = v.map_or(core::ptr::null_mut(), |s| s.as_ptr() as *mut c_void);
             }
-            // SAFETY: checked for NULL; the caller owns the structure.
-            unsafe { *p = out };
+            p.set(out);
             0
         }
         Ok(Err(e)) | Err(e) => e.code(),
@@ -256,13 +234,20 @@ pub unsafe extern "C" fn CcmGetSrdoParam(
     if let Err(e) = exists.and_then(|r| r) {
         return e.code();
     }
-    let r = get_commu(wSrdoCommuIndex_p, pSrdoCommuParam_p);
-    if r != 0 {
-        return r;
+    // SAFETY: the caller's contract (NULL, skipped, or writable).
+    if let Ok(commu) = unsafe { ptr::out(pSrdoCommuParam_p) } {
+        let r = get_commu(wSrdoCommuIndex_p, commu);
+        if r != 0 {
+            return r;
+        }
     }
     #[cfg(not(srdo_static_mapping))]
     {
-        get_mapp(wSrdoCommuIndex_p, pSrdoMappParam_p as *mut tSrdoMappParam)
+        // SAFETY: as above; a tSrdoMappParam with dynamic mapping.
+        match unsafe { ptr::out(pSrdoMappParam_p as *mut tSrdoMappParam) } {
+            Ok(mapp) => get_mapp(wSrdoCommuIndex_p, mapp),
+            Err(_) => 0,
+        }
     }
     #[cfg(srdo_static_mapping)]
     {
@@ -284,10 +269,9 @@ pub unsafe extern "C" fn SrdoGetCommuParam(
     wSrdoCommuIndex_p: WORD,
     pSrdoCommuParam_p: *mut tSrdoCommuParam,
 ) -> tCopKernel {
-    if pSrdoCommuParam_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
-    get_commu(wSrdoCommuIndex_p, pSrdoCommuParam_p)
+    // SAFETY: the caller's contract (NULL or writable).
+    let out = c_try!(unsafe { ptr::out(pSrdoCommuParam_p) });
+    get_commu(wSrdoCommuIndex_p, out)
 }
 
 /// `SrdoGetMappParam` (dynamic mapping only). kCopInvalidParam (NULL),
@@ -301,10 +285,9 @@ pub unsafe extern "C" fn SrdoGetMappParam(
     wSrdoCommuIndex_p: WORD,
     pSrdoMappParam_p: *mut tSrdoMappParam,
 ) -> tCopKernel {
-    if pSrdoMappParam_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
-    get_mapp(wSrdoCommuIndex_p, pSrdoMappParam_p)
+    // SAFETY: the caller's contract (NULL or writable).
+    let out = c_try!(unsafe { ptr::out(pSrdoMappParam_p) });
+    get_mapp(wSrdoCommuIndex_p, out)
 }
 
 /// `CcmCalcSrdoCrc`: the CRC-16 over one SRDO's parameters as they are now
@@ -315,13 +298,11 @@ pub unsafe extern "C" fn SrdoGetMappParam(
 /// `pwCrc_p` must be NULL or valid for writing a WORD.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmCalcSrdoCrc(wCommuIndex_p: WORD, pwCrc_p: *mut WORD) -> tCopKernel {
-    if pwCrc_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
+    // SAFETY: the caller's contract (NULL or a writable WORD).
+    let out = c_try!(unsafe { ptr::out(pwCrc_p) });
     match global::with(|i| i.stack.srdo().calc_crc(i.stack.od(), wCommuIndex_p)) {
         Ok(Ok(crc)) => {
-            // SAFETY: checked for NULL.
-            unsafe { *pwCrc_p = crc };
+            out.set(crc);
             0
         }
         Ok(Err(e)) | Err(e) => e.code(),
@@ -370,11 +351,11 @@ pub unsafe extern "C" fn CcmStaticDefineSrdoVarFields(
     code(global::with(|i| {
         let len = usize::from(i.stack.srdo().mapped_len(i.stack.od(), wCommuIndex_p)?);
         // SAFETY: the caller guarantees both fields hold the mapped length
-        // for the lifetime of the stack.
+        // for the lifetime of the stack (NULL was refused above).
         let (n, v) = unsafe {
             (
-                super::ccm::static_bytes(pNormalData_p, len),
-                super::ccm::static_bytes(pInversData_p, len),
+                ptr::lent_bytes(pNormalData_p, len)?,
+                ptr::lent_bytes(pInversData_p, len)?,
             )
         };
         let Instance { stack, .. } = i;
@@ -412,11 +393,8 @@ pub unsafe extern "C" fn SrdoStaticDefineVarFields(
 /// `pInitParam_p` must be NULL or point to a valid `tSrdoInitParam`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn SrdoInit(pInitParam_p: *const tSrdoInitParam) -> tCopKernel {
-    if pInitParam_p.is_null() {
-        return CopKernel::InvalidParam.code();
-    }
-    // SAFETY: checked for NULL.
-    let p = unsafe { *pInitParam_p };
+    // SAFETY: the caller's contract (NULL or a valid tSrdoInitParam).
+    let p = c_try!(unsafe { ptr::read(pInitParam_p) });
     if p.m_bGranularity != 0 && p.m_bGranularity != crate::config::SRDO_GRANULARITY {
         return CopKernel::SrdoGranularityMismatch.code();
     }

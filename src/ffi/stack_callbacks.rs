@@ -4,8 +4,8 @@
 //! through the dictionary's write hooks instead, so these functions only
 //! acknowledge.
 
-use super::od_table::ObdCbParam;
 use super::types::tCopKernel;
+use crate::od::table::ObdCbParam;
 
 macro_rules! stack_callbacks {
     ($($name:ident),* $(,)?) => {

@@ -32,14 +32,8 @@ pub type tProgMonEvent = tFastByte;
 /// `tCcmInitCall`.
 pub type tCcmInitCall = tFastByte;
 /// `tObdSize`.
-pub type tObdSize = crate::ffi::od_table::ObdSize;
-/// A `tObdSize` as a byte count. `tObdSize` is a BYTE, WORD or DWORD
-/// (`OBD_SUPPORTED_OBJ_SIZE`), so the conversion is lossless on every
-/// target with 32-bit or wider pointers (`usize::from` has no `u32` form).
-#[inline]
-pub const fn obd_size_len(size: tObdSize) -> usize {
-    size as usize
-}
+pub type tObdSize = crate::od::ObdSize;
+pub use crate::od::table::obd_size_len;
 /// `tCanId`: WORD for CAN 2.0A, DWORD for CAN 2.0B (`CDRV_CAN_SPEC`).
 #[cfg(not(cdrv_can20b))]
 pub type tCanId = WORD;
@@ -159,6 +153,11 @@ pub type tAppHbcEventCallback =
 /// received emergency.
 pub type tAppEmccEventCallback =
     Option<unsafe extern "C" fn(bNodeId_p: BYTE, pEmcParam_p: *mut tEmcParam) -> tCopKernel>;
+
+/// `tPdoCallback` (single-instance form): called with the communication
+/// index after an RPDO's data reached its variables or after a TPDO was
+/// sent.
+pub type tPdoCallback = Option<unsafe extern "C" fn(wPdoCommuIndex_p: WORD) -> tCopKernel>;
 
 /// `tObdPart`: `kObdPart*` bits.
 pub type tObdPart = tFastByte;
@@ -319,13 +318,13 @@ pub struct tSrdoAppCallbacks {
 #[derive(Clone, Copy, Debug)]
 pub struct tObdRamParam {
     /// Generic part (0x1000–0x1FFF), ends with index 0xFFFF.
-    pub m_pGenericPart: *const crate::ffi::od_table::ObdEntry,
+    pub m_pGenericPart: *const crate::od::ObdEntry,
     /// Manufacturer part (0x2000–0x5FFF).
-    pub m_pManufacturerPart: *const crate::ffi::od_table::ObdEntry,
+    pub m_pManufacturerPart: *const crate::od::ObdEntry,
     /// Device part (0x6000–0x9FFF).
-    pub m_pDevicePart: *const crate::ffi::od_table::ObdEntry,
+    pub m_pDevicePart: *const crate::od::ObdEntry,
     /// User part (may be NULL).
-    pub m_pUserPart: *const crate::ffi::od_table::ObdEntry,
+    pub m_pUserPart: *const crate::od::ObdEntry,
     /// Address of the configuration signature the application was built
     /// against (see include/cop_config.h).
     pub m_pbAbiSignature: *const BYTE,

@@ -12,6 +12,21 @@
 //!     [ObdSubEntry::ram(0, DataType::UInt16, Access::SRW, &PRODUCER_HB, Some(&PRODUCER_HB_DEF))];
 //! static GENERIC: [ObdEntry; 1] = [ObdEntry::new(0x1017, &SUBS_1017, None)];
 //! ```
+//!
+//! The same object in one line with [`od_ram!`](crate::od_ram) (and a
+//! constant with [`od_rom!`](crate::od_rom)):
+//!
+//! ```
+//! use cop::od::ObdEntry;
+//!
+//! cop::od_ram!(static SUBS_1017, PRODUCER_HB: u16 = 100 => UInt16, SRW);
+//! cop::od_rom!(static SUBS_1000: u32 = 0x0001_0191 => UInt32, R);
+//! static GENERIC: [ObdEntry; 2] = [
+//!     ObdEntry::new(0x1000, &SUBS_1000, None),
+//!     ObdEntry::new(0x1017, &SUBS_1017, None),
+//! ];
+//! assert_eq!(cop::od::decl::get(&PRODUCER_HB), [0, 0]); // defaults apply at reset
+//! ```
 
 use core::sync::atomic::{AtomicU8, Ordering};
 
@@ -48,4 +63,124 @@ pub fn set<const N: usize>(v: &[AtomicU8; N], bytes: [u8; N]) {
     for (b, x) in v.iter().zip(bytes) {
         b.store(x, Ordering::Relaxed);
     }
+}
+
+/// The three values of a ranged entry (default, low, high; each `N`
+/// bytes, CPU byte order) one after the other, as
+/// [`ObdSubEntry::ram_range`](crate::od::ObdSubEntry::ram_range) takes
+/// them. `M` must be `3 * N` (checked when the constant is evaluated).
+// Indexing is bounded by the loop condition and the check; `get_mut` is
+// not usable in a const fn.
+#[allow(clippy::indexing_slicing)]
+pub const fn limits<const N: usize, const M: usize>(
+    default: [u8; N],
+    low: [u8; N],
+    high: [u8; N],
+) -> [u8; M] {
+    // Evaluated at compile time in a static: a misuse is a build error.
+    #[allow(clippy::panic)]
+    if M != 3 * N {
+        panic!("limits: the result holds three values");
+    }
+    let mut out = [0u8; M];
+    let mut i = 0;
+    while i < N {
+        out[i] = default[i];
+        out[N + i] = low[i];
+        out[2 * N + i] = high[i];
+        i += 1;
+    }
+    out
+}
+
+/// `impl Default` as `new()` for the variable blocks of the declaration
+/// helpers (PDO and SRDO parameter objects).
+macro_rules! default_is_new {
+    ($($block:ty),* $(,)?) => {
+        $(
+            impl Default for $block {
+                fn default() -> Self {
+                    Self::new()
+                }
+            }
+        )*
+    };
+}
+pub(crate) use default_is_new;
+
+/// Declares a one-subindex object (subindex 0) whose value is a RAM
+/// variable: `static $subs: [ObdSubEntry; 1]` and the variable `static
+/// $var: [AtomicU8; size_of::<$t>()]`, with the default `$default` (of the
+/// Rust type `$t`, stored in CPU byte order) or none.
+///
+/// `od_ram!(static S1005, SYNC_COB: u32 = 0x80 => UInt32, SRW);` is
+/// `ObdSubEntry::ram(0, DataType::UInt32, Access::SRW, &SYNC_COB,
+/// Some(&0x80u32.to_ne_bytes()))`; without `= default` the entry has no
+/// default; a trailing `range(low, high)` makes it a ranged entry
+/// ([`ObdSubEntry::ram_range`](crate::od::ObdSubEntry::ram_range)). `$typ` names a [`DataType`](crate::od::DataType) variant,
+/// `$access` an [`Access`](crate::od::Access) constant.
+#[macro_export]
+macro_rules! od_ram {
+    ($vis:vis static $subs:ident, $var:ident: $t:ty = $default:expr => $typ:ident, $access:ident) => {
+        $vis static $var: [::core::sync::atomic::AtomicU8; ::core::mem::size_of::<$t>()] =
+            $crate::od::decl::zeroed();
+        $vis static $subs: [$crate::od::ObdSubEntry; 1] = {
+            static DEFAULT: [u8; ::core::mem::size_of::<$t>()] = <$t>::to_ne_bytes($default);
+            [$crate::od::ObdSubEntry::ram(
+                0,
+                $crate::od::DataType::$typ,
+                $crate::od::Access::$access,
+                &$var,
+                Some(&DEFAULT),
+            )]
+        };
+    };
+    ($vis:vis static $subs:ident, $var:ident: $t:ty = $default:expr => $typ:ident, $access:ident,
+        range($low:expr, $high:expr)) => {
+        $vis static $var: [::core::sync::atomic::AtomicU8; ::core::mem::size_of::<$t>()] =
+            $crate::od::decl::zeroed();
+        $vis static $subs: [$crate::od::ObdSubEntry; 1] = {
+            static LIMITS: [u8; 3 * ::core::mem::size_of::<$t>()] = $crate::od::decl::limits(
+                <$t>::to_ne_bytes($default),
+                <$t>::to_ne_bytes($low),
+                <$t>::to_ne_bytes($high),
+            );
+            [$crate::od::ObdSubEntry::ram_range(
+                0,
+                $crate::od::DataType::$typ,
+                $crate::od::Access::$access,
+                &$var,
+                &LIMITS,
+            )]
+        };
+    };
+    ($vis:vis static $subs:ident, $var:ident: $t:ty => $typ:ident, $access:ident) => {
+        $vis static $var: [::core::sync::atomic::AtomicU8; ::core::mem::size_of::<$t>()] =
+            $crate::od::decl::zeroed();
+        $vis static $subs: [$crate::od::ObdSubEntry; 1] = [$crate::od::ObdSubEntry::ram(
+            0,
+            $crate::od::DataType::$typ,
+            $crate::od::Access::$access,
+            &$var,
+            None,
+        )];
+    };
+}
+
+/// Declares a one-subindex constant object (subindex 0): `static $subs:
+/// [ObdSubEntry; 1]` holding `$value` of the Rust type `$t` (CPU byte
+/// order), as [`od_ram!`](crate::od_ram) does for variables.
+#[macro_export]
+macro_rules! od_rom {
+    ($vis:vis static $subs:ident: $t:ty = $value:expr => $typ:ident, $access:ident) => {
+        $vis static $subs: [$crate::od::ObdSubEntry; 1] = {
+            static VALUE: [u8; ::core::mem::size_of::<$t>()] = <$t>::to_ne_bytes($value);
+            [$crate::od::ObdSubEntry::rom(
+                0,
+                $crate::od::DataType::$typ,
+                $crate::od::Access::$access,
+                &VALUE,
+            )]
+        };
+    };
 }

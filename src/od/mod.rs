@@ -3,7 +3,7 @@
 //!
 //! The tables come from the application's `objdict.h` (through
 //! `include/objdef.h`), from Rust code, or from the dynamic OD; all use the
-//! format of [`crate::ffi::od_table`]. Lookup is a binary search over the
+//! format of [`table`]. Lookup is a binary search over the
 //! sorted part tables (O(log n)); unsorted tables are refused when the
 //! dictionary is created.
 //!
@@ -16,14 +16,16 @@ pub mod dcf;
 pub mod decl;
 pub mod dynamic;
 pub mod eds;
+// The table format shared with C: raw pointers into the application's
+// statics, the one place of the core that needs `unsafe`.
+#[allow(unsafe_code)]
+pub mod table;
 mod types;
 pub mod value;
 
 pub use types::{Access, DataType, Encoding};
 
-pub use crate::ffi::od_table::{
-    CbArg, ObdCallback, ObdEntry, ObdSize, ObdSubEntry, ObdVarEntry, Storage, kind,
-};
+pub use table::{CbArg, ObdCallback, ObdEntry, ObdSize, ObdSubEntry, ObdVarEntry, Storage, kind};
 
 use core::sync::atomic::AtomicU8;
 use core::sync::atomic::Ordering::Relaxed;
@@ -184,6 +186,22 @@ impl Entry {
         self.subs.get(usize::from(sub)).filter(|d| d.sub() == sub)
     }
 
+    /// The variable of `sub` when it is the common case of the fast paths:
+    /// a number in a plain RAM variable of exactly its wire size, at its
+    /// usual position.
+    #[inline(always)]
+    fn plain_number(&self, sub: u8) -> Option<&'static [AtomicU8]> {
+        let desc = self.at_position(sub)?;
+        let wire = NUMERIC_WIRE_SIZE
+            .get(usize::from(desc.m_bType))
+            .copied()
+            .unwrap_or(0);
+        if desc.m_dwSize != u32::from(wire) {
+            return None;
+        }
+        desc.ram_var(0)
+    }
+
     /// Reads a numeric subindex as an unsigned integer without access
     /// checks or callbacks, as [`ObjectDictionary::read_uint`] does: the
     /// value's wire bytes (little-endian) read as a number.
@@ -192,16 +210,8 @@ impl Entry {
         // The common case, a number in a plain RAM variable of exactly its
         // wire size at its usual position, directly: the value's bytes are
         // the wire bytes (little-endian).
-        if let Some(desc) = self.at_position(sub) {
-            let wire = NUMERIC_WIRE_SIZE
-                .get(usize::from(desc.m_bType))
-                .copied()
-                .unwrap_or(0);
-            if desc.m_dwSize == u32::from(wire) {
-                if let Some(v) = desc.ram_var(0).and_then(load_uint) {
-                    return Ok(v);
-                }
-            }
+        if let Some(v) = self.plain_number(sub).and_then(load_uint) {
+            return Ok(v);
         }
         self.read_uint_general(sub)
     }
@@ -212,18 +222,8 @@ impl Entry {
     /// number of bytes. Bytes of `out` beyond them are not touched.
     #[inline]
     pub fn read_wire(&self, sub: u8, out: &mut [u8; MAX_FIXED]) -> Result<usize, OdError> {
-        if let Some(desc) = self.at_position(sub) {
-            let wire = NUMERIC_WIRE_SIZE
-                .get(usize::from(desc.m_bType))
-                .copied()
-                .unwrap_or(0);
-            if desc.m_dwSize == u32::from(wire) {
-                if let Some(m) = desc.ram_var(0) {
-                    if let Some(n) = load_wire(m, out) {
-                        return Ok(n);
-                    }
-                }
-            }
+        if let Some(n) = self.plain_number(sub).and_then(|m| load_wire(m, out)) {
+            return Ok(n);
         }
         self.read_wire_general(sub, out)
     }

@@ -19,11 +19,25 @@
 //! static GENERIC: [ObdEntry; 2] =
 //!     [ObdEntry::new(0x1800, &S1800, None), ObdEntry::new(0x1A00, &S1A00, None)];
 //! ```
+//!
+//! The same two objects with [`pdo_commu!`](crate::pdo_commu) and
+//! [`pdo_mapp!`](crate::pdo_mapp):
+//!
+//! ```
+//! use cop::od::ObdEntry;
+//!
+//! cop::pdo_commu!(static S1800, V1800 = 0x180, 255, 0, 0);
+//! cop::pdo_mapp!(static S1A00, V1A00 = [0x2000_0108]);
+//! static GENERIC: [ObdEntry; 2] =
+//!     [ObdEntry::new(0x1800, &S1800, None), ObdEntry::new(0x1A00, &S1A00, None)];
+//! ```
 
 use core::sync::atomic::AtomicU8;
 
 use super::PDO_MAX_MAPPENTRIES;
 use crate::od::{Access, DataType, ObdSubEntry, decl};
+
+crate::od::decl::default_is_new!(CommuVars, MappVars);
 
 /// Highest subindex of a communication parameter object.
 static COMMU_SUB0: [u8; 1] = [5];
@@ -50,12 +64,6 @@ impl CommuVars {
             inhibit: decl::zeroed(),
             event: decl::zeroed(),
         }
-    }
-}
-
-impl Default for CommuVars {
-    fn default() -> Self {
-        Self::new()
     }
 }
 
@@ -122,12 +130,6 @@ impl MappVars {
     }
 }
 
-impl Default for MappVars {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-
 /// The defaults of a mapping parameter object (CPU byte order).
 #[derive(Debug)]
 pub struct MappDefaults {
@@ -178,4 +180,38 @@ pub const fn mapp_subs(
         i += 1;
     }
     subs
+}
+
+/// Declares a communication parameter object (0x1400+n / 0x1800+n): the
+/// variables `static $var: CommuVars` and the subindex table `static
+/// $subs: [ObdSubEntry; 5]` with the defaults COB-ID, transmission type,
+/// inhibit time (100 µs) and event timer (ms), as
+/// [`CommuDefaults::new`] takes them.
+#[macro_export]
+macro_rules! pdo_commu {
+    ($vis:vis static $subs:ident, $var:ident = $cob:expr, $tx_type:expr, $inhibit:expr, $event:expr) => {
+        $vis static $var: $crate::pdo::decl::CommuVars = $crate::pdo::decl::CommuVars::new();
+        $vis static $subs: [$crate::od::ObdSubEntry; 5] = {
+            static DEFAULTS: $crate::pdo::decl::CommuDefaults =
+                $crate::pdo::decl::CommuDefaults::new($cob, $tx_type, $inhibit, $event);
+            $crate::pdo::decl::commu_subs(&$var, &DEFAULTS)
+        };
+    };
+}
+
+/// Declares a mapping parameter object (0x1600+n / 0x1A00+n): the
+/// variables `static $var: MappVars` and the subindex table `static $subs:
+/// [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1]` with the default entries
+/// (`index << 16 | subindex << 8 | bits`, as [`MappDefaults::new`] takes
+/// them).
+#[macro_export]
+macro_rules! pdo_mapp {
+    ($vis:vis static $subs:ident, $var:ident = [$($entry:expr),* $(,)?]) => {
+        $vis static $var: $crate::pdo::decl::MappVars = $crate::pdo::decl::MappVars::new();
+        $vis static $subs: [$crate::od::ObdSubEntry; $crate::pdo::PDO_MAX_MAPPENTRIES + 1] = {
+            static DEFAULTS: $crate::pdo::decl::MappDefaults =
+                $crate::pdo::decl::MappDefaults::new(&[$($entry),*]);
+            $crate::pdo::decl::mapp_subs(&$var, &DEFAULTS)
+        };
+    };
 }

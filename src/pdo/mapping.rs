@@ -90,7 +90,7 @@ pub fn check_entry(
     raw: u32,
     rules: Rules,
 ) -> Result<u8, OdError> {
-    let e = MapEntry::from_u32(raw);
+    let e = MapEntry::decode(raw);
     if u16::from(e.bits) > MAX_BITS {
         return Err(refuse::LENGTH);
     }
@@ -189,7 +189,7 @@ pub fn check_write(
 
 /// 0x1005 (CiA 301 §7.5.2.5): the identifier must be usable; bit 30
 /// ("generate SYNC") makes this node the SYNC producer
-/// ([`crate::syncp`]); bit 31 is "do not care".
+/// ([`crate::sync`]); bit 31 is "do not care".
 fn check_sync_cob_id(v: u32) -> Result<(), OdError> {
     wire::check_identifier(v & !(COB_INVALID | COB_NO_RTR), crate::config::CDRV_CAN20B)
         .map_err(|_| refuse::INVALID)

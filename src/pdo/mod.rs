@@ -51,7 +51,7 @@
 //!   EMCY producer does with 0x80.
 //! * The SYNC consumer is always active with the COB-ID of 0x1005 (0x80
 //!   when the dictionary has no 0x1005). With bit 30 set this node is the
-//!   SYNC producer ([`crate::syncp`]); the stack passes each SYNC it sends
+//!   SYNC producer ([`crate::sync`]); the stack passes each SYNC it sends
 //!   to this module, which treats it like a received one.
 //! * The SYNC counter byte (DLC 1) is accepted and not evaluated: the
 //!   parameter objects end at sub 5, so there is no SYNC start value;
@@ -68,13 +68,13 @@
 //!   `CcmDefineStaticPdoTab`) survive NMT resets; the dictionary values are
 //!   restored to their defaults as CiA 301 requires.
 
-mod api;
 pub mod decl;
 pub mod mapping;
+mod param;
 #[cfg(test)]
 mod tests;
 
-pub use api::{PdoParam, StaticPdoParam};
+pub use param::{PdoParam, StaticPdoParam};
 
 use core::sync::atomic::{AtomicU8, Ordering};
 
@@ -697,7 +697,7 @@ impl Pdo {
                 .iter()
                 .take(ch.cfg.count)
                 .filter_map(|raw| {
-                    let e = MapEntry::from_u32(*raw);
+                    let e = MapEntry::decode(*raw);
                     od.find(e.index, e.sub).ok()
                 })
                 .any(|obj| is_var(&obj));
@@ -790,25 +790,7 @@ impl Pdo {
         q: &mut ActionQueue,
         emcy: &mut EmcyProducer,
     ) -> bool {
-        let taken = self.take_frame(od, state, rx, port, now, q, emcy);
-        if taken {
-            self.wake();
-        }
-        taken
-    }
-
-    /// [`Pdo::on_frame`] without the wake-up.
-    #[allow(clippy::too_many_arguments)]
-    fn take_frame(
-        &mut self,
-        od: &ObjectDictionary,
-        state: NmtState,
-        rx: &RxFrame,
-        port: &mut impl CanPort,
-        now: Ticks,
-        q: &mut ActionQueue,
-        emcy: &mut EmcyProducer,
-    ) -> bool {
+        // A taken frame wakes the module's timer pass (see `quiet`).
         let f = &rx.frame;
         if Some(f.id) == self.sync.cob && !f.rtr {
             // CiA 301 §7.2.5: DLC 0, or 1 with the counter; other lengths
@@ -816,6 +798,7 @@ impl Pdo {
             if wire::decode_sync(f).is_some() && state == NmtState::Operational {
                 self.on_sync(rx.time);
             }
+            self.wake();
             return true;
         }
         if f.rtr {
@@ -829,6 +812,7 @@ impl Pdo {
             if state == NmtState::Operational && ch.usable() {
                 ch.rtr_pending = true;
             }
+            self.wake();
             return true;
         }
         let Some(n) = self.rx.iter().position(|c| c.cfg.cob == Some(f.id)) else {
@@ -837,6 +821,7 @@ impl Pdo {
         if state == NmtState::Operational {
             self.on_rpdo(n, od, rx, port, now, q, emcy);
         }
+        self.wake();
         true
     }
 
@@ -888,7 +873,7 @@ impl Pdo {
     /// count it. The work that may send frames or queue events is done in
     /// [`Pdo::poll`] so that one received frame never queues more than one
     /// event.
-    fn on_sync(&mut self, at: Ticks) {
+    pub(crate) fn on_sync(&mut self, at: Ticks) {
         self.wake();
         self.sync.last = Some(at);
         for ch in self.rx.iter_mut() {
@@ -1211,7 +1196,7 @@ fn sample(od: &ObjectDictionary, ch: &Channel) -> Result<Payload, CopKernel> {
     }
     let mut pos = 0u16;
     for raw in ch.cfg.entries.iter().take(ch.cfg.count) {
-        let e = MapEntry::from_u32(*raw);
+        let e = MapEntry::decode(*raw);
         let obj = od
             .find(e.index, e.sub)
             .map_err(|_| CopKernel::PdoErrorPdoEncode)?;
@@ -1245,7 +1230,7 @@ fn apply(od: &ObjectDictionary, ch: &Channel, p: &Payload) -> Result<(), CopKern
         .iter_mut()
         .zip(ch.cfg.entries.iter().take(ch.cfg.count))
     {
-        let e = MapEntry::from_u32(*raw);
+        let e = MapEntry::decode(*raw);
         let v = wire::extract_bits(p.bytes(), pos, e.bits).ok_or(CopKernel::PdoErrorPdoDecode)?;
         pos += u16::from(e.bits);
         if mapping::is_dummy(e) {
@@ -1307,7 +1292,10 @@ fn send_emcy(
     dlc: u8,
 ) {
     // Error register: generic error (bit 0) and communication error (bit 4).
-    let register = od.read_uint(emcy::ERROR_REGISTER_INDEX, 0).unwrap_or(0) as u8 | 0x11;
+    let register = od
+        .read_uint(emcy::producer::ERROR_REGISTER_INDEX, 0)
+        .unwrap_or(0) as u8
+        | 0x11;
     let i = commu.to_le_bytes();
     let e = Emergency {
         code,

@@ -4,25 +4,19 @@
 
 use core::sync::atomic::AtomicU8;
 
-use super::decl::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
+use super::decl::{CommuDefaults, CommuVars, commu_subs};
 use super::mapping::{Rules, check_entry, check_mapping, check_write, refuse};
 use super::*;
 use crate::od::{Access, DataType, NoHooks, ObdEntry, ObdSubEntry, decl as od_decl};
 use crate::port::CanFrame;
 
-static V1400: CommuVars = CommuVars::new();
-static D1400: CommuDefaults = CommuDefaults::new(0x8000_0200, 255, 0, 0);
-static S1400: [ObdSubEntry; 5] = commu_subs(&V1400, &D1400);
-static V1600: MappVars = MappVars::new();
-static D1600: MappDefaults = MappDefaults::new(&[0x2000_0108, 0x2000_0210]);
-static S1600: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1600, &D1600);
+crate::pdo_commu!(static S1400, V1400 = 0x8000_0200, 255, 0, 0);
+crate::pdo_mapp!(static S1600, V1600 = [0x2000_0108, 0x2000_0210]);
 static V1800: CommuVars = CommuVars::new();
 // The predefined connection set base: the node-ID is added.
 static D1800: CommuDefaults = CommuDefaults::new(0x180, 255, 0, 0);
 static S1800: [ObdSubEntry; 5] = commu_subs(&V1800, &D1800);
-static V1A00: MappVars = MappVars::new();
-static D1A00: MappDefaults = MappDefaults::new(&[0x2000_0108, 0x2000_0210, 0x2000_0320]);
-static S1A00: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1A00, &D1A00);
+crate::pdo_mapp!(static S1A00, V1A00 = [0x2000_0108, 0x2000_0210, 0x2000_0320]);
 
 static U8V: [AtomicU8; 1] = od_decl::zeroed();
 static U16V: [AtomicU8; 2] = od_decl::zeroed();
@@ -31,12 +25,11 @@ static B1: [AtomicU8; 1] = od_decl::zeroed();
 static PLAIN: [AtomicU8; 1] = od_decl::zeroed();
 static RO: [AtomicU8; 1] = od_decl::zeroed();
 static RANGED: [AtomicU8; 2] = od_decl::zeroed();
-static RANGED_LIMITS: [u8; 6] = {
-    let d = 0i16.to_ne_bytes();
-    let l = (-100i16).to_ne_bytes();
-    let h = 100i16.to_ne_bytes();
-    [d[0], d[1], l[0], l[1], h[0], h[1]]
-};
+static RANGED_LIMITS: [u8; 6] = od_decl::limits(
+    0i16.to_ne_bytes(),
+    (-100i16).to_ne_bytes(),
+    100i16.to_ne_bytes(),
+);
 static B2: [AtomicU8; 1] = od_decl::zeroed();
 static TEXT: [AtomicU8; 5] = od_decl::zeroed();
 static S2000: [ObdSubEntry; 10] = [

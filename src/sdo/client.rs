@@ -492,24 +492,22 @@ fn finish_tx_abort(
         // The abort is best effort: the transfer ends here either way.
         let _ = port.send(&ClientFrame::Abort { mux, code }.to_can(tx), Priority::Low);
     }
-    ch.transfer = None;
-    ch.state = SdocState::TxAborted;
-    ch.abort = code;
-    q.emit(Event::SdocFinished {
-        client: index,
-        state: SdocState::TxAborted as u8,
-        abort: code,
-    });
+    end_aborted(ch, index, SdocState::TxAborted, code, q);
 }
 
 /// The server aborted the transfer.
 fn finish_rx_abort(ch: &mut Channel, index: u16, code: u32, q: &mut ActionQueue) {
+    end_aborted(ch, index, SdocState::RxAborted, code, q);
+}
+
+/// Ends the transfer in `state` (one of the aborted states) with `code`.
+fn end_aborted(ch: &mut Channel, index: u16, state: SdocState, code: u32, q: &mut ActionQueue) {
     ch.transfer = None;
-    ch.state = SdocState::RxAborted;
+    ch.state = state;
     ch.abort = code;
     q.emit(Event::SdocFinished {
         client: index,
-        state: SdocState::RxAborted as u8,
+        state: state as u8,
         abort: code,
     });
 }

@@ -105,32 +105,28 @@ macro_rules! device_od {
     };
 }
 
-device_od!(
-    producer,
-    "Dictionary of the producer (node 1).",
-    1,
-    4,
-    [0x6200_0110, 0x6300_0110, 0x6201_0110, 0x6301_0110],
-    [
-        (0x6200, NORMAL, 0),
-        (0x6201, NORMAL, 2),
-        (0x6300, INVERTED, 0),
-        (0x6301, INVERTED, 2)
-    ]
-);
-device_od!(
-    consumer,
-    "Dictionary of the consumer (node 2).",
-    2,
-    4,
-    [0x6200_0110, 0x6300_0110, 0x6201_0110, 0x6301_0110],
-    [
-        (0x6200, NORMAL, 0),
-        (0x6201, NORMAL, 2),
-        (0x6300, INVERTED, 0),
-        (0x6301, INVERTED, 2)
-    ]
-);
+/// A device with the two UNSIGNED16 pairs (0x6200/0x6300 sub 0 and
+/// 0x6201/0x6301) in SRDO 1, direction `$direction`.
+macro_rules! two_pair_od {
+    ($name:ident, $doc:literal, $direction:expr) => {
+        device_od!(
+            $name,
+            $doc,
+            $direction,
+            4,
+            [0x6200_0110, 0x6300_0110, 0x6201_0110, 0x6301_0110],
+            [
+                (0x6200, NORMAL, 0),
+                (0x6201, NORMAL, 2),
+                (0x6300, INVERTED, 0),
+                (0x6301, INVERTED, 2)
+            ]
+        );
+    };
+}
+
+two_pair_od!(producer, "Dictionary of the producer (node 1).", 1);
+two_pair_od!(consumer, "Dictionary of the consumer (node 2).", 2);
 device_od!(
     rogue,
     "Dictionary of the rogue producer (node 3): same COB-IDs, one pair.",

@@ -173,45 +173,9 @@ impl Direction {
     }
 }
 
-/// A decoded SRDO mapping entry (PDO format `index << 16 | sub << 8 |
-/// bit length`, manual 1.1.2).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct MappingEntry {
-    /// Index of the mapped object.
-    pub index: u16,
-    /// Subindex of the mapped object.
-    pub sub: u8,
-    /// Length in bits.
-    pub bits: u8,
-}
-
-impl MappingEntry {
-    /// Splits a 32-bit mapping value.
-    pub const fn decode(v: u32) -> MappingEntry {
-        MappingEntry {
-            index: (v >> 16) as u16,
-            sub: (v >> 8) as u8,
-            bits: v as u8,
-        }
-    }
-
-    /// The 32-bit mapping value.
-    pub const fn encode(self) -> u32 {
-        (self.index as u32) << 16 | (self.sub as u32) << 8 | self.bits as u32
-    }
-
-    /// For a CiA 301 dummy entry (data type index 0x0001..=0x0007) the size
-    /// of its type in bits; `None` for ordinary objects.
-    pub const fn dummy_bits(self) -> Option<u8> {
-        match self.index {
-            0x0001 => Some(1),
-            0x0002 | 0x0005 => Some(8),
-            0x0003 | 0x0006 => Some(16),
-            0x0004 | 0x0007 => Some(32),
-            _ => None,
-        }
-    }
-}
+/// A decoded SRDO mapping entry: the PDO format `index << 16 | sub << 8 |
+/// bit length` (manual 1.1.2), decoded by [`crate::wire::pdo`].
+pub use crate::wire::pdo::MapEntry as MappingEntry;
 
 /// `tSrdoCommuParam`: what `CcmGetSrdoParam` reports of the communication
 /// parameter.

@@ -44,6 +44,8 @@ use core::sync::atomic::AtomicU8;
 use crate::config::SRDO_MAX_MAPPENTRIES;
 use crate::od::{Access, DataType, ObdSubEntry};
 
+crate::od::decl::default_is_new!(CommuVars, MappVars);
+
 /// Subindices of a communication parameter (0..=6).
 pub const COMMU_SUBS: usize = 7;
 /// Subindices of a mapping parameter (0..=`SRDO_MAX_MAPPENTRIES`).
@@ -77,12 +79,6 @@ impl CommuVars {
             cob1: crate::od::decl::zeroed(),
             cob2: crate::od::decl::zeroed(),
         }
-    }
-}
-
-impl Default for CommuVars {
-    fn default() -> Self {
-        Self::new()
     }
 }
 
@@ -172,12 +168,6 @@ impl MappVars {
             count: crate::od::decl::zeroed(),
             entries: crate::od::decl::zeroed(),
         }
-    }
-}
-
-impl Default for MappVars {
-    fn default() -> Self {
-        Self::new()
     }
 }
 

@@ -256,6 +256,25 @@ impl General {
     pub(super) fn gather(&self) -> Option<(u64, u64)> {
         let vars = self.resolve()?;
         let mut data = [0u64; 2];
+        self.each_entry(&vars, |frame, var, meta, offset| {
+            let value = var.map_or(0, load_native) & payload_mask(meta & 0x0F);
+            if let Some(d) = data.get_mut(frame) {
+                *d |= value.checked_shl(offset).unwrap_or(0);
+            }
+        });
+        let [normal, inverted] = data;
+        Some((normal, inverted))
+    }
+
+    /// Calls `f(frame, variable, meta, bit offset)` for each mapped entry in
+    /// mapping order: frame 0 (normal data) and 1 (inverted data)
+    /// alternate, and each pair starts where the previous one ended.
+    #[inline(always)]
+    fn each_entry(
+        &self,
+        vars: &[Option<&'static [AtomicU8]>; SRDO_MAX_MAPPENTRIES],
+        mut f: impl FnMut(usize, Option<&'static [AtomicU8]>, u8, u32),
+    ) {
         let mut offset = 0u32;
         for (i, (var, meta)) in vars
             .iter()
@@ -263,17 +282,11 @@ impl General {
             .take(usize::from(self.count))
             .enumerate()
         {
-            let wire = *meta & 0x0F;
-            let value = var.map_or(0, load_native) & payload_mask(wire);
-            if let Some(d) = data.get_mut(i % 2) {
-                *d |= value.checked_shl(offset).unwrap_or(0);
-            }
+            f(i % 2, *var, *meta, offset);
             if i % 2 == 1 {
-                offset += 8 * u32::from(wire);
+                offset += 8 * u32::from(*meta & 0x0F);
             }
         }
-        let [normal, inverted] = data;
-        Some((normal, inverted))
     }
 
     /// Writes received normal and inverted data to the mapped variables.
@@ -284,25 +297,16 @@ impl General {
             return false;
         };
         let data = [normal, inverted];
-        let mut offset = 0u32;
-        for (i, (var, meta)) in vars
-            .iter()
-            .zip(&self.meta)
-            .take(usize::from(self.count))
-            .enumerate()
-        {
-            let wire = *meta & 0x0F;
-            if let (Some(m), Some(d)) = (var, data.get(i % 2)) {
+        self.each_entry(&vars, |frame, var, meta, offset| {
+            let wire = meta & 0x0F;
+            if let (Some(m), Some(d)) = (var, data.get(frame)) {
                 let mut value = d.checked_shr(offset).unwrap_or(0) & payload_mask(wire);
-                if *meta & META_SIGNED != 0 {
+                if meta & META_SIGNED != 0 {
                     value = crate::od::value::sign_extend(value, usize::from(wire));
                 }
                 store_native(m, value);
             }
-            if i % 2 == 1 {
-                offset += 8 * u32::from(wire);
-            }
-        }
+        });
         true
     }
 }

@@ -77,7 +77,7 @@ pub struct MapEntry {
 
 impl MapEntry {
     /// Decodes the 32-bit value of a mapping subindex.
-    pub const fn from_u32(v: u32) -> MapEntry {
+    pub const fn decode(v: u32) -> MapEntry {
         MapEntry {
             index: (v >> 16) as u16,
             sub: (v >> 8) as u8,
@@ -86,8 +86,20 @@ impl MapEntry {
     }
 
     /// The 32-bit value of a mapping subindex.
-    pub const fn to_u32(self) -> u32 {
+    pub const fn encode(self) -> u32 {
         (self.index as u32) << 16 | (self.sub as u32) << 8 | self.bits as u32
+    }
+
+    /// For a CiA 301 dummy entry (data type index 0x0001..=0x0007) the size
+    /// of its type in bits; `None` for ordinary objects.
+    pub const fn dummy_bits(self) -> Option<u8> {
+        match self.index {
+            0x0001 => Some(1),
+            0x0002 | 0x0005 => Some(8),
+            0x0003 | 0x0006 => Some(16),
+            0x0004 | 0x0007 => Some(32),
+            _ => None,
+        }
     }
 }
 
@@ -264,7 +276,7 @@ mod tests {
     #[test]
     fn mapping_entry_layout() {
         // CiA 301 §7.5.2.36: 0x60000108 maps 0x6000 sub 1, 8 bits.
-        let e = MapEntry::from_u32(0x6000_0108);
+        let e = MapEntry::decode(0x6000_0108);
         assert_eq!(
             e,
             MapEntry {
@@ -273,12 +285,12 @@ mod tests {
                 bits: 8
             }
         );
-        assert_eq!(e.to_u32(), 0x6000_0108);
+        assert_eq!(e.encode(), 0x6000_0108);
         // A 32-bit object, subindex 0x12.
-        assert_eq!(MapEntry::from_u32(0x2001_1220).bits, 32);
-        assert_eq!(MapEntry::from_u32(0x2001_1220).sub, 0x12);
+        assert_eq!(MapEntry::decode(0x2001_1220).bits, 32);
+        assert_eq!(MapEntry::decode(0x2001_1220).sub, 0x12);
         // A BOOLEAN mapped as one bit.
-        assert_eq!(MapEntry::from_u32(0x2100_0301).bits, 1);
+        assert_eq!(MapEntry::decode(0x2100_0301).bits, 1);
     }
 
     #[test]

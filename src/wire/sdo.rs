@@ -526,6 +526,136 @@ const fn end_crc(data: &[u8; FRAME_LEN]) -> u16 {
     u16::from_le_bytes([data[1], data[2]])
 }
 
+/// The block-transfer frames of the side that sends the data (client in a
+/// download, server in an upload; specifier 6 in both directions):
+/// initiate with the size, and end with the CRC.
+#[derive(Clone, Copy)]
+enum SenderBlock {
+    Initiate {
+        mux: Multiplexer,
+        crc: bool,
+        size: Option<u32>,
+    },
+    End {
+        unused: u8,
+        crc: u16,
+    },
+}
+
+impl SenderBlock {
+    #[inline(always)]
+    fn encode(self, cs: u8) -> [u8; FRAME_LEN] {
+        match self {
+            SenderBlock::Initiate { mux, crc, size } => block_initiate(cs, mux, crc, size),
+            SenderBlock::End { unused, crc } => block_end(cs, unused, crc),
+        }
+    }
+
+    #[inline(always)]
+    fn decode(data: &[u8; FRAME_LEN]) -> Self {
+        if data[0] & 0x01 == BLOCK_END {
+            SenderBlock::End {
+                unused: end_unused(data),
+                crc: end_crc(data),
+            }
+        } else {
+            SenderBlock::Initiate {
+                mux: Multiplexer::from_frame(data),
+                crc: data[0] & BLOCK_CRC != 0,
+                size: block_size(data),
+            }
+        }
+    }
+}
+
+/// The block-transfer frames of the side that receives the data (server
+/// in a download, client in an upload; specifier 5 in both directions):
+/// initiate with the block size (and, from the client, the protocol
+/// switch threshold), the sub-block confirmation, the end response, and
+/// the client's start.
+#[derive(Clone, Copy)]
+enum ReceiverBlock {
+    Initiate {
+        mux: Multiplexer,
+        crc: bool,
+        blksize: u8,
+        pst: u8,
+    },
+    Ack {
+        ackseq: u8,
+        blksize: u8,
+    },
+    End,
+    Start,
+}
+
+impl ReceiverBlock {
+    #[inline(always)]
+    fn encode(self, cs: u8) -> [u8; FRAME_LEN] {
+        let mut out = [0u8; FRAME_LEN];
+        match self {
+            ReceiverBlock::Initiate {
+                mux,
+                crc,
+                blksize,
+                pst,
+            } => {
+                out[0] = block_cmd(cs, BLOCK_INITIATE, crc);
+                out[4] = blksize;
+                out[5] = pst;
+                mux.put(&mut out);
+            }
+            ReceiverBlock::Ack { ackseq, blksize } => return block_ack(cs, ackseq, blksize),
+            ReceiverBlock::End => out[0] = block_cmd(cs, BLOCK_END, false),
+            ReceiverBlock::Start => out[0] = block_cmd(cs, BLOCK_START, false),
+        }
+        out
+    }
+
+    #[inline(always)]
+    fn decode(data: &[u8; FRAME_LEN]) -> Self {
+        match data[0] & 0x03 {
+            BLOCK_INITIATE => ReceiverBlock::Initiate {
+                mux: Multiplexer::from_frame(data),
+                crc: data[0] & BLOCK_CRC != 0,
+                blksize: data[4],
+                pst: data[5],
+            },
+            BLOCK_END => ReceiverBlock::End,
+            BLOCK_ACK => ReceiverBlock::Ack {
+                ackseq: data[1],
+                blksize: data[2],
+            },
+            _ => ReceiverBlock::Start,
+        }
+    }
+}
+
+/// The error of a frame with an unsupported command specifier `cs`.
+fn unsupported(cs: u8, data: &[u8; FRAME_LEN]) -> DecodeError {
+    DecodeError::UnsupportedCommand {
+        cs,
+        mux: Multiplexer::from_frame(data),
+    }
+}
+
+/// `from_can` and `to_can` of a frame type with `decode` and `encode`.
+macro_rules! can_conversions {
+    ($frame:ty) => {
+        impl $frame {
+            /// Decodes a received CAN frame (see [`frame_bytes`]).
+            pub fn from_can(frame: &CanFrame) -> Result<Self, DecodeError> {
+                Self::decode(frame_bytes(frame)?)
+            }
+
+            /// A CAN frame with this content.
+            pub fn to_can(&self, id: CanId) -> CanFrame {
+                CanFrame::new(id, &self.encode())
+            }
+        }
+    };
+}
+
 impl ClientFrame {
     /// The 8 data bytes of this frame.
     pub fn encode(&self) -> [u8; FRAME_LEN] {
@@ -544,36 +674,28 @@ impl ClientFrame {
             ClientFrame::UploadSegment { toggle } => toggle_only(CCS_UPLOAD_SEGMENT, toggle),
             ClientFrame::Abort { mux, code } => abort(mux, code),
             ClientFrame::BlockDownloadInitiate { mux, crc, size } => {
-                block_initiate(CCS_BLOCK_DOWNLOAD, mux, crc, size)
+                SenderBlock::Initiate { mux, crc, size }.encode(CCS_BLOCK_DOWNLOAD)
             }
             ClientFrame::BlockDownloadEnd { unused, crc } => {
-                block_end(CCS_BLOCK_DOWNLOAD, unused, crc)
+                SenderBlock::End { unused, crc }.encode(CCS_BLOCK_DOWNLOAD)
             }
             ClientFrame::BlockUploadInitiate {
                 mux,
                 crc,
                 blksize,
                 pst,
-            } => {
-                let mut out = [0u8; FRAME_LEN];
-                out[0] = block_cmd(CCS_BLOCK_UPLOAD, BLOCK_INITIATE, crc);
-                out[4] = blksize;
-                out[5] = pst;
-                with_mux(mux, out)
+            } => ReceiverBlock::Initiate {
+                mux,
+                crc,
+                blksize,
+                pst,
             }
-            ClientFrame::BlockUploadStart => {
-                let mut out = [0u8; FRAME_LEN];
-                out[0] = block_cmd(CCS_BLOCK_UPLOAD, BLOCK_START, false);
-                out
-            }
+            .encode(CCS_BLOCK_UPLOAD),
+            ClientFrame::BlockUploadStart => ReceiverBlock::Start.encode(CCS_BLOCK_UPLOAD),
             ClientFrame::BlockUploadAck { ackseq, blksize } => {
-                block_ack(CCS_BLOCK_UPLOAD, ackseq, blksize)
+                ReceiverBlock::Ack { ackseq, blksize }.encode(CCS_BLOCK_UPLOAD)
             }
-            ClientFrame::BlockUploadEndResponse => {
-                let mut out = [0u8; FRAME_LEN];
-                out[0] = block_cmd(CCS_BLOCK_UPLOAD, BLOCK_END, false);
-                out
-            }
+            ClientFrame::BlockUploadEndResponse => ReceiverBlock::End.encode(CCS_BLOCK_UPLOAD),
         }
     }
 
@@ -598,53 +720,36 @@ impl ClientFrame {
                 mux: Multiplexer::from_frame(data),
                 code: abort_code(data),
             },
-            CCS_BLOCK_UPLOAD => match data[0] & 0x03 {
-                BLOCK_INITIATE => ClientFrame::BlockUploadInitiate {
-                    mux: Multiplexer::from_frame(data),
-                    crc: data[0] & BLOCK_CRC != 0,
-                    blksize: data[4],
-                    pst: data[5],
+            CCS_BLOCK_UPLOAD => match ReceiverBlock::decode(data) {
+                ReceiverBlock::Initiate {
+                    mux,
+                    crc,
+                    blksize,
+                    pst,
+                } => ClientFrame::BlockUploadInitiate {
+                    mux,
+                    crc,
+                    blksize,
+                    pst,
                 },
-                BLOCK_END => ClientFrame::BlockUploadEndResponse,
-                BLOCK_ACK => ClientFrame::BlockUploadAck {
-                    ackseq: data[1],
-                    blksize: data[2],
-                },
-                _ => ClientFrame::BlockUploadStart,
-            },
-            CCS_BLOCK_DOWNLOAD => {
-                if data[0] & 0x01 == BLOCK_END {
-                    ClientFrame::BlockDownloadEnd {
-                        unused: end_unused(data),
-                        crc: end_crc(data),
-                    }
-                } else {
-                    ClientFrame::BlockDownloadInitiate {
-                        mux: Multiplexer::from_frame(data),
-                        crc: data[0] & BLOCK_CRC != 0,
-                        size: block_size(data),
-                    }
+                ReceiverBlock::End => ClientFrame::BlockUploadEndResponse,
+                ReceiverBlock::Ack { ackseq, blksize } => {
+                    ClientFrame::BlockUploadAck { ackseq, blksize }
                 }
-            }
-            cs => {
-                return Err(DecodeError::UnsupportedCommand {
-                    cs,
-                    mux: Multiplexer::from_frame(data),
-                });
-            }
+                ReceiverBlock::Start => ClientFrame::BlockUploadStart,
+            },
+            CCS_BLOCK_DOWNLOAD => match SenderBlock::decode(data) {
+                SenderBlock::End { unused, crc } => ClientFrame::BlockDownloadEnd { unused, crc },
+                SenderBlock::Initiate { mux, crc, size } => {
+                    ClientFrame::BlockDownloadInitiate { mux, crc, size }
+                }
+            },
+            cs => return Err(unsupported(cs, data)),
         })
     }
-
-    /// Decodes a received CAN frame (see [`frame_bytes`]).
-    pub fn from_can(frame: &CanFrame) -> Result<Self, DecodeError> {
-        Self::decode(frame_bytes(frame)?)
-    }
-
-    /// A CAN frame with this content.
-    pub fn to_can(&self, id: CanId) -> CanFrame {
-        CanFrame::new(id, &self.encode())
-    }
 }
+
+can_conversions!(ClientFrame);
 
 impl ServerFrame {
     /// The 8 data bytes of this frame.
@@ -666,23 +771,24 @@ impl ServerFrame {
             }
             ServerFrame::Abort { mux, code } => abort(mux, code),
             ServerFrame::BlockDownloadInitiateResponse { mux, crc, blksize } => {
-                let mut out = [0u8; FRAME_LEN];
-                out[0] = block_cmd(SCS_BLOCK_DOWNLOAD, BLOCK_INITIATE, crc);
-                out[4] = blksize;
-                with_mux(mux, out)
+                ReceiverBlock::Initiate {
+                    mux,
+                    crc,
+                    blksize,
+                    pst: 0,
+                }
+                .encode(SCS_BLOCK_DOWNLOAD)
             }
             ServerFrame::BlockDownloadAck { ackseq, blksize } => {
-                block_ack(SCS_BLOCK_DOWNLOAD, ackseq, blksize)
+                ReceiverBlock::Ack { ackseq, blksize }.encode(SCS_BLOCK_DOWNLOAD)
             }
-            ServerFrame::BlockDownloadEndResponse => {
-                let mut out = [0u8; FRAME_LEN];
-                out[0] = block_cmd(SCS_BLOCK_DOWNLOAD, BLOCK_END, false);
-                out
-            }
+            ServerFrame::BlockDownloadEndResponse => ReceiverBlock::End.encode(SCS_BLOCK_DOWNLOAD),
             ServerFrame::BlockUploadInitiateResponse { mux, crc, size } => {
-                block_initiate(SCS_BLOCK_UPLOAD, mux, crc, size)
+                SenderBlock::Initiate { mux, crc, size }.encode(SCS_BLOCK_UPLOAD)
             }
-            ServerFrame::BlockUploadEnd { unused, crc } => block_end(SCS_BLOCK_UPLOAD, unused, crc),
+            ServerFrame::BlockUploadEnd { unused, crc } => {
+                SenderBlock::End { unused, crc }.encode(SCS_BLOCK_UPLOAD)
+            }
         }
     }
 
@@ -707,57 +813,29 @@ impl ServerFrame {
                 mux: Multiplexer::from_frame(data),
                 code: abort_code(data),
             },
-            SCS_BLOCK_DOWNLOAD => match data[0] & 0x03 {
-                BLOCK_INITIATE => ServerFrame::BlockDownloadInitiateResponse {
-                    mux: Multiplexer::from_frame(data),
-                    crc: data[0] & BLOCK_CRC != 0,
-                    blksize: data[4],
-                },
-                BLOCK_END => ServerFrame::BlockDownloadEndResponse,
-                BLOCK_ACK => ServerFrame::BlockDownloadAck {
-                    ackseq: data[1],
-                    blksize: data[2],
-                },
-                _ => {
-                    return Err(DecodeError::UnsupportedCommand {
-                        cs: SCS_BLOCK_DOWNLOAD,
-                        mux: Multiplexer::from_frame(data),
-                    });
+            SCS_BLOCK_DOWNLOAD => match ReceiverBlock::decode(data) {
+                ReceiverBlock::Initiate {
+                    mux, crc, blksize, ..
+                } => ServerFrame::BlockDownloadInitiateResponse { mux, crc, blksize },
+                ReceiverBlock::End => ServerFrame::BlockDownloadEndResponse,
+                ReceiverBlock::Ack { ackseq, blksize } => {
+                    ServerFrame::BlockDownloadAck { ackseq, blksize }
+                }
+                // Step 3 is the client's start; no server sends it.
+                ReceiverBlock::Start => return Err(unsupported(SCS_BLOCK_DOWNLOAD, data)),
+            },
+            SCS_BLOCK_UPLOAD => match SenderBlock::decode(data) {
+                SenderBlock::End { unused, crc } => ServerFrame::BlockUploadEnd { unused, crc },
+                SenderBlock::Initiate { mux, crc, size } => {
+                    ServerFrame::BlockUploadInitiateResponse { mux, crc, size }
                 }
             },
-            SCS_BLOCK_UPLOAD => {
-                if data[0] & 0x01 == BLOCK_END {
-                    ServerFrame::BlockUploadEnd {
-                        unused: end_unused(data),
-                        crc: end_crc(data),
-                    }
-                } else {
-                    ServerFrame::BlockUploadInitiateResponse {
-                        mux: Multiplexer::from_frame(data),
-                        crc: data[0] & BLOCK_CRC != 0,
-                        size: block_size(data),
-                    }
-                }
-            }
-            cs => {
-                return Err(DecodeError::UnsupportedCommand {
-                    cs,
-                    mux: Multiplexer::from_frame(data),
-                });
-            }
+            cs => return Err(unsupported(cs, data)),
         })
     }
-
-    /// Decodes a received CAN frame (see [`frame_bytes`]).
-    pub fn from_can(frame: &CanFrame) -> Result<Self, DecodeError> {
-        Self::decode(frame_bytes(frame)?)
-    }
-
-    /// A CAN frame with this content.
-    pub fn to_can(&self, id: CanId) -> CanFrame {
-        CanFrame::new(id, &self.encode())
-    }
 }
+
+can_conversions!(ServerFrame);
 
 /// One segment of a sub-block (CiA 301 download / upload SDO block segment
 /// protocols), the same layout in both directions: byte 0 is c (bit 7, no

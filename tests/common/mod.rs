@@ -1,12 +1,13 @@
 //! Harness shared by the whole-stack test files: one node (stack, port on
-//! the simulated bus, the events it produced) driven cycle by cycle, and an
-//! SDO client with its server. Each file that uses them adds its own
+//! the simulated bus, the events it produced) driven cycle by cycle, two
+//! such nodes on one bus, and an SDO client with its server. Each file that uses them adds its own
 //! methods in an `impl` block of its own.
 
 // Not every file uses every method.
 #![allow(dead_code)]
 
 use core::sync::atomic::AtomicU8;
+use std::sync::{Mutex, MutexGuard};
 
 use cop::ccm::{NmtCommand, Stack};
 use cop::error::OdError;
@@ -82,6 +83,72 @@ impl Node {
     /// A numeric object's value.
     pub fn read(&self, index: u16, sub: u8) -> u64 {
         self.stack.od().read_uint(index, sub).unwrap()
+    }
+}
+
+impl Node {
+    /// Takes the events `pick` selects (as it maps them); the others are
+    /// dropped with them.
+    pub fn take<T>(&mut self, pick: impl FnMut(&Event) -> Option<T>) -> Vec<T> {
+        let v = self.events.iter().filter_map(pick).collect();
+        self.events.clear();
+        v
+    }
+}
+
+/// Two nodes on one bus. The test files' dictionaries are statics, so a
+/// network holds the file's lock (`serial`) while it exists.
+pub struct Net {
+    pub bus: SimBus,
+    pub a: Node,
+    pub b: Node,
+    /// The file's lock, held as long as the network exists.
+    pub _guard: MutexGuard<'static, ()>,
+}
+
+impl Net {
+    /// Nodes `a` and `b` with their dictionaries (made once the lock is
+    /// held: they share the file's statics) and node-IDs, both
+    /// PRE-OPERATIONAL with their start-up events and frames kept.
+    pub fn pair(
+        serial: &'static Mutex<()>,
+        a: (fn() -> ObjectDictionary, u8),
+        b: (fn() -> ObjectDictionary, u8),
+    ) -> Net {
+        let guard = serial.lock().unwrap_or_else(|e| e.into_inner());
+        let bus = SimBus::new();
+        let a = Node::new(&bus, (a.0)(), a.1);
+        let b = Node::new(&bus, (b.0)(), b.1);
+        Net {
+            bus,
+            a,
+            b,
+            _guard: guard,
+        }
+    }
+
+    /// Advances the bus by `ms` milliseconds, one cycle per node and ms.
+    pub fn run(&mut self, ms: u32) {
+        for _ in 0..ms {
+            self.bus.advance_ms(1);
+            self.step();
+        }
+    }
+
+    /// One cycle per node without advancing the time.
+    pub fn step(&mut self) {
+        self.a.cycle();
+        self.b.cycle();
+    }
+
+    /// (time, payload) of every data frame with identifier `id` so far.
+    pub fn frames(&self, id: u32) -> Vec<(u32, Vec<u8>)> {
+        self.bus
+            .sent()
+            .into_iter()
+            .filter(|(_, _, f)| f.id.id() == id && !f.rtr)
+            .map(|(_, t, f)| (t.0, f.payload().to_vec()))
+            .collect()
     }
 }
 

@@ -15,13 +15,6 @@ const RESP: u16 = 0x582;
 /// Capacity of the long string: more than the transfer buffer.
 const STR_CAP: usize = SDOS_BUFFER_SIZE + 44;
 
-const fn limits_u16(default: u16, low: u16, high: u16) -> [u8; 6] {
-    let d = default.to_ne_bytes();
-    let l = low.to_ne_bytes();
-    let h = high.to_ne_bytes();
-    [d[0], d[1], l[0], l[1], h[0], h[1]]
-}
-
 /// A fresh dictionary per test (the variables are statics of each
 /// expansion, so tests running in parallel do not share them):
 /// 0x1000 U32 const, 0x2000 U8 rw, 0x2001 U16 rw range 10..=1000,
@@ -30,13 +23,10 @@ const fn limits_u16(default: u16, low: u16, high: u16) -> [u8; 6] {
 macro_rules! test_od {
     () => {{
         static DEVICE_TYPE: [u8; 4] = 0x0000_0191u32.to_ne_bytes();
-        static U8_VAR: [AtomicU8; 1] = decl::zeroed();
         static U16_VAR: [AtomicU8; 2] = decl::init(100u16.to_ne_bytes());
-        static U16_LIMITS: [u8; 6] = limits_u16(100, 10, 1000);
+        static U16_LIMITS: [u8; 6] = decl::limits(100u16.to_ne_bytes(), 10u16.to_ne_bytes(), 1000u16.to_ne_bytes());
         static RO_VAR: [AtomicU8; 4] = decl::init(0x1234_5678u32.to_ne_bytes());
-        static WO_VAR: [AtomicU8; 4] = decl::zeroed();
         static STR_VAR: [AtomicU8; STR_CAP + 1] = decl::zeroed();
-        static U64_VAR: [AtomicU8; 8] = decl::zeroed();
         static OUT_COUNT: [u8; 1] = [1];
         static OUT_VAR: [AtomicU8; 1] = decl::zeroed();
         static S1000: [ObdSubEntry; 1] = [ObdSubEntry::rom(
@@ -45,13 +35,7 @@ macro_rules! test_od {
             Access::R,
             &DEVICE_TYPE,
         )];
-        static S2000: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-            0,
-            DataType::UInt8,
-            Access::RW,
-            &U8_VAR,
-            None,
-        )];
+        crate::od_ram!(static S2000, U8_VAR: u8 => UInt8, RW);
         static S2001: [ObdSubEntry; 1] = [ObdSubEntry::ram_range(
             0,
             DataType::UInt16,
@@ -66,21 +50,9 @@ macro_rules! test_od {
             &RO_VAR,
             None,
         )];
-        static S2003: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-            0,
-            DataType::UInt32,
-            Access::W,
-            &WO_VAR,
-            None,
-        )];
+        crate::od_ram!(static S2003, WO_VAR: u32 => UInt32, W);
         static S2004: [ObdSubEntry; 1] = [ObdSubEntry::ram_string(0, Access::RW, &STR_VAR, c"")];
-        static S2005: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-            0,
-            DataType::UInt64,
-            Access::RW,
-            &U64_VAR,
-            None,
-        )];
+        crate::od_ram!(static S2005, U64_VAR: u64 => UInt64, RW);
         static S6200: [ObdSubEntry; 2] = [
             ObdSubEntry::rom(0, DataType::UInt8, Access::R, &OUT_COUNT),
             ObdSubEntry::ram(1, DataType::UInt8, Access::RW, &OUT_VAR, None),

@@ -1,4 +1,4 @@
-//! Emergency producer (objects 0x1001, 0x1003, 0x1014, 0x1015).
+//! Emergency producer (SYS TEC EMCP, objects 0x1001, 0x1003, 0x1014, 0x1015).
 //!
 //! The pre-defined error field 0x1003 is emptied by
 //! `CcmClearPreDefinedErrorField` or by writing 0 to its subindex 0 (CiA

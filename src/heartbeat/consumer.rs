@@ -1,4 +1,4 @@
-//! Heartbeat consumer (object 0x1016, CiA 301 7.2.8.3.2.2).
+//! Heartbeat consumer (SYS TEC HBC, object 0x1016, CiA 301 7.2.8.3.2.2).
 //!
 //! Each entry of 0x1016 holds `node-ID << 16 | heartbeat time (ms)`; an
 //! entry with node-ID 0 or time 0 is unused. Supervision of a node starts
@@ -7,6 +7,7 @@
 //! heartbeat.
 
 use crate::event::{ActionQueue, ErrCtrlEvent, Event};
+use crate::nmt::Supervision;
 use crate::od::ObjectDictionary;
 use crate::port::{Ticks, ms_to_ticks};
 use crate::wire::nmt::ErrorControl;
@@ -16,17 +17,6 @@ pub const CONSUMER_TIME_INDEX: u16 = 0x1016;
 
 /// Capacity: `HBC_MAX_CONSUMER_IN_OBD`.
 pub const CAPACITY: usize = crate::config::HBC_MAX_CONSUMER_IN_OBD;
-
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-enum Supervision {
-    /// No heartbeat seen yet.
-    #[default]
-    Waiting,
-    /// Heartbeats arrive in time.
-    Active,
-    /// The time passed; reported.
-    Lost,
-}
 
 #[derive(Clone, Copy, Debug, Default)]
 struct Entry {

@@ -28,6 +28,7 @@
 //!   returns to 0.
 //! * Reset communication ends supervision until the next guard request.
 
+use super::Supervision;
 use crate::event::ErrCtrlEvent;
 use crate::od::ObjectDictionary;
 use crate::port::{Ticks, ms_to_ticks};
@@ -41,17 +42,6 @@ pub const EMCY_LIFE_GUARD: u16 = 0x8130;
 /// Error register bits set with the life guarding event (CiA 301
 /// 7.5.2.2): generic error and communication error.
 pub const ERROR_REGISTER_BITS: u8 = 0x11;
-
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-enum Supervision {
-    /// No guard request since the start or the last reset.
-    #[default]
-    Waiting,
-    /// Requests arrive within the life time.
-    Active,
-    /// The life time passed without a request; reported.
-    Lost,
-}
 
 /// The life guarding slave.
 #[derive(Clone, Debug, Default)]

@@ -7,10 +7,18 @@
 //! order) with two additions: the storage kind and the variable size, so the
 //! core never has to guess how wide a C variable is.
 //!
-//! Raw pointers live only here. Every accessor the core uses is safe: the
-//! invariant "each pointer in a table is valid for the program's lifetime
-//! with the stated size" is established by the constructors (Rust) or by
-//! objdef.h (C, checked for plausibility in [`validate_part`]).
+//! This is the one module of the core that is allowed `unsafe` (every
+//! block with its `SAFETY` comment): the tables are the C application's
+//! own data, so their pointers are the dictionary's storage. Every
+//! accessor the core uses is safe: the invariant "each pointer in a table
+//! is valid for the program's lifetime with the stated size" is established
+//! by the constructors (Rust) or by objdef.h (C, checked for plausibility
+//! when the dictionary is created). The C edge (`crate::ffi`) builds
+//! nothing of its own here: it hands the application's tables over as they
+//! are.
+
+// The field names are those of the C structures (objdict.h, cop.h).
+#![allow(non_snake_case)]
 
 use core::ffi::c_void;
 use core::sync::atomic::{AtomicPtr, AtomicU8, Ordering};
@@ -20,6 +28,14 @@ use crate::od::{Access, DataType};
 
 /// `tObdSize`: BYTE, WORD or DWORD according to `OBD_SUPPORTED_OBJ_SIZE`.
 pub type ObdSize = ObdSizeRepr;
+
+/// A `tObdSize` as a byte count. `tObdSize` is a BYTE, WORD or DWORD
+/// (`OBD_SUPPORTED_OBJ_SIZE`), so the conversion is lossless on every
+/// target with 32-bit or wider pointers (`usize::from` has no `u32` form).
+#[inline]
+pub const fn obd_size_len(size: ObdSize) -> usize {
+    size as usize
+}
 
 /// Storage kinds (`m_bKind`).
 pub mod kind {
@@ -519,7 +535,7 @@ impl ObdEntry {
             CbArg::StringDomain(&mut p),
         )?;
         if let Storage::Var(v) = storage {
-            if p.m_pData != ptr || super::types::obd_size_len(p.m_ObjSize) != size {
+            if p.m_pData != ptr || obd_size_len(p.m_ObjSize) != size {
                 v.m_pData.store(p.m_pData, Ordering::Relaxed);
                 v.m_Size.store(p.m_ObjSize, Ordering::Relaxed);
             }
@@ -627,23 +643,4 @@ impl Default for ObdVarEntry {
     fn default() -> Self {
         Self::new()
     }
-}
-
-/// Reads a C table that ends with an index of 0xFFFF (as objdef.h emits
-/// them) into a slice without the end marker.
-///
-/// # Safety
-/// `table` must point to a static array of `ObdEntry` terminated by an entry
-/// whose index is 0xFFFF.
-pub unsafe fn c_table(table: *const ObdEntry) -> &'static [ObdEntry] {
-    if table.is_null() {
-        return &[];
-    }
-    let mut n = 0usize;
-    // SAFETY: the caller guarantees an end marker; we stop there.
-    while unsafe { (*table.add(n)).m_wIndex } != 0xFFFF {
-        n += 1;
-    }
-    // SAFETY: the first n entries were just read and are valid statics.
-    unsafe { core::slice::from_raw_parts(table, n) }
 }

@@ -1,4 +1,4 @@
-//! Heartbeat producer (object 0x1017) and the node guarding answer of an
+//! Heartbeat producer (SYS TEC HBP, object 0x1017) and the node guarding answer of an
 //! NMT slave (CiA 301 7.2.8.3.2).
 
 use crate::od::ObjectDictionary;

@@ -1,5 +1,5 @@
-//! NMT master: module control commands, boot-up detection and node
-//! guarding of slaves (life guarding master, CiA 301 7.2.8.3.2.1).
+//! NMT master (SYS TEC NMTM): module control commands, boot-up detection
+//! and node guarding of slaves (life guarding master, CiA 301 7.2.8.3.2.1).
 
 use crate::error::{CopKernel, CopResult};
 use crate::event::{ActionQueue, ErrCtrlEvent, Event};

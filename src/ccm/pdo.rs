@@ -5,81 +5,15 @@
 //! written through [`Stack::write_object`], so they pass the same checks as
 //! an SDO download.
 
-use core::sync::atomic::AtomicU8;
-
-use super::{Direction, PDO_MAX_MAPPENTRIES, PdoIndex, Role, SYNC_COB_ID_INDEX, SYNC_WINDOW_INDEX};
-use crate::ccm::Stack;
+use super::Stack;
 use crate::error::{CopKernel, CopResult, OdError};
 use crate::od::{ByteOrder, Storage};
+use crate::pdo::{
+    Direction, PDO_MAX_MAPPENTRIES, PdoIndex, PdoParam, Role, SYNC_COB_ID_INDEX, SYNC_WINDOW_INDEX,
+    StaticPdoParam,
+};
 use crate::port::{CanPort, Ticks};
 use crate::wire::pdo::{COB_EXTENDED, COB_ID_MASK, COB_INVALID, COB_NO_RTR};
-
-/// One PDO definition (`tPdoParam` of `CcmDefinePdoTab`); `None` fields
-/// are not valid (their `kPdoValid*` flag is clear) and keep what the
-/// dictionary holds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct PdoParam<'a> {
-    /// Communication parameter index (0x1400+ or 0x1800+).
-    pub commu_index: u16,
-    /// `m_bPdoType`: must match the index range.
-    pub direction: Direction,
-    /// `m_bNodeID`: added to the identifier of `cob_id` (0: none).
-    pub node_id: u8,
-    /// COB-ID (`kPdoValidCanId`).
-    pub cob_id: Option<u32>,
-    /// Transmission type (`kPdoValidTxType`).
-    pub tx_type: Option<u8>,
-    /// Inhibit time in 100 µs (`kPdoValidInihibitTime`).
-    pub inhibit_time: Option<u16>,
-    /// Event timer in ms (`kPdoValidEventTime`).
-    pub event_time: Option<u16>,
-    /// Number of mapped objects (`kPdoValidNrOfEntries`).
-    pub entry_count: Option<u8>,
-    /// Mapping entries (`kPdoValidMappObjects`); entries beyond the count
-    /// are ignored.
-    pub entries: Option<&'a [u32]>,
-    /// The application wants `Event::Pdo` for this PDO
-    /// (`kPdoValidCallback` with or without a function).
-    pub notify: Option<bool>,
-}
-
-impl PdoParam<'_> {
-    /// A definition of `commu_index` that changes nothing.
-    pub const fn new(commu_index: u16, direction: Direction) -> Self {
-        PdoParam {
-            commu_index,
-            direction,
-            node_id: 0,
-            cob_id: None,
-            tx_type: None,
-            inhibit_time: None,
-            event_time: None,
-            entry_count: None,
-            entries: None,
-            notify: None,
-        }
-    }
-}
-
-/// One static PDO (`tPdoStaticParam` of `CcmDefineStaticPdoTab`): the
-/// payload is a byte block of the application instead of a mapping.
-#[derive(Clone, Copy, Debug)]
-pub struct StaticPdoParam {
-    /// Communication parameter index (0x1400+ or 0x1800+).
-    pub commu_index: u16,
-    /// COB-ID.
-    pub cob_id: u32,
-    /// Transmission type.
-    pub tx_type: u8,
-    /// Inhibit time in 100 µs.
-    pub inhibit_time: u16,
-    /// Event timer in ms.
-    pub event_time: u16,
-    /// The payload (`m_pVarData`, `m_bSize` bytes, at most 8).
-    pub data: &'static [AtomicU8],
-    /// The application wants `Event::Pdo` for this PDO.
-    pub notify: bool,
-}
 
 fn kernel(e: OdError) -> CopKernel {
     e.kernel
@@ -133,7 +67,7 @@ impl Stack {
         now: Ticks,
     ) -> CopResult {
         let commu = p.commu();
-        let current = super::mapping::cob_id_of(self.od(), commu);
+        let current = crate::pdo::mapping::cob_id_of(self.od(), commu);
         // CiA 301 mapping procedure step 1: the PDO must not exist while
         // its parameters change.
         if current & COB_INVALID == 0 {
