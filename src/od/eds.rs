@@ -40,7 +40,7 @@
 use core::fmt::{self, Write};
 
 use super::{Access, ByteOrder, DataType, ObdEntry, Object, ObjectDictionary, Part, value};
-use crate::srdo::{
+use crate::wire::srdo::{
     COMMU_FIRST as SRDO_COMMU_FIRST, COMMU_LAST as SRDO_COMMU_LAST, MAPP_FIRST as SRDO_MAPP_FIRST,
     MAPP_LAST as SRDO_MAPP_LAST,
 };

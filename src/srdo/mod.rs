@@ -101,24 +101,10 @@ use crate::wire::srdo::{self as wire, COB_ID_COUNT, COB_ID_MIN, SrdoCobIds};
 
 pub use crc::crc16;
 
-/// Global Fail-Safe Command parameter (0 = GFC off, 1 = on).
-pub const GFC_PARAM_INDEX: u16 = 0x1300;
-/// Communication index of SRDO n is `COMMU_BASE + n` (n = 1..=64).
-pub const COMMU_BASE: u16 = 0x1300;
-/// First SRDO communication parameter.
-pub const COMMU_FIRST: u16 = 0x1301;
-/// Last SRDO communication parameter.
-pub const COMMU_LAST: u16 = 0x1340;
-/// Distance from an SRDO's communication to its mapping parameter.
-pub const MAPP_OFFSET: u16 = 0x80;
-/// First SRDO mapping parameter.
-pub const MAPP_FIRST: u16 = 0x1381;
-/// Last SRDO mapping parameter.
-pub const MAPP_LAST: u16 = 0x13C0;
-/// Configuration valid.
-pub const CONFIG_VALID_INDEX: u16 = 0x13FE;
-/// Safety configuration checksums (sub n = SRDO n).
-pub const CRC_INDEX: u16 = 0x13FF;
+pub use crate::wire::srdo::{
+    COMMU_BASE, COMMU_FIRST, COMMU_LAST, CONFIG_VALID_INDEX, CRC_INDEX, GFC_PARAM_INDEX,
+    MAPP_FIRST, MAPP_LAST, MAPP_OFFSET,
+};
 /// The value of 0x13FE that declares the configuration valid.
 pub const CONFIG_VALID: u8 = 0xA5;
 /// The only transmission type of an SRDO (asynchronous, manual 1.1.1).

@@ -8,6 +8,26 @@
 
 use crate::port::{CanFrame, CanId};
 
+// Object indices of the safety objects (CiA 304; seed manual L-1077d 1.5).
+/// Global Fail-Safe Command parameter (0 = GFC off, 1 = on).
+pub const GFC_PARAM_INDEX: u16 = 0x1300;
+/// Communication index of SRDO n is `COMMU_BASE + n` (n = 1..=64).
+pub const COMMU_BASE: u16 = 0x1300;
+/// First SRDO communication parameter.
+pub const COMMU_FIRST: u16 = 0x1301;
+/// Last SRDO communication parameter.
+pub const COMMU_LAST: u16 = 0x1340;
+/// Distance from an SRDO's communication to its mapping parameter.
+pub const MAPP_OFFSET: u16 = 0x80;
+/// First SRDO mapping parameter.
+pub const MAPP_FIRST: u16 = 0x1381;
+/// Last SRDO mapping parameter.
+pub const MAPP_LAST: u16 = 0x13C0;
+/// Configuration valid.
+pub const CONFIG_VALID_INDEX: u16 = 0x13FE;
+/// Safety configuration checksums (sub n = SRDO n).
+pub const CRC_INDEX: u16 = 0x13FF;
+
 /// Lowest valid SRDO COB-ID (manual 1.1.1: "Werte im Bereich von 0x101 –
 /// 0x180").
 pub const COB_ID_MIN: u16 = 0x101;
