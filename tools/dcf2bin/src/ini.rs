@@ -16,6 +16,10 @@
 //!   things.
 //! * A UTF-8 byte order mark is skipped; a file that is not UTF-8 is read
 //!   as ISO 8859-1 (what Windows tools write), which the caller reports.
+//!
+//! Why not an INI crate (rust-ini, configparser): their maps keep neither
+//! the line of a key nor the fact that a key or section came twice, and
+//! both are what a user needs in a message about a tool's file.
 
 use std::collections::BTreeMap;
 
