@@ -4,6 +4,18 @@
 # provides only the documented application symbols, fails on any other
 # undefined symbol, and prints the sizes.
 #
+#   scripts/tms570.sh          the link check (above)
+#   scripts/tms570.sh run      also: the safety demo and the C tests as target
+#                              programs under qemu-armeb, the alignment check
+#                              and the stack table (scripts/tms570/run.sh)
+#   scripts/tms570.sh sizes    .text of a complete safety node and an I/O node
+#
+# The archive is built with +strict-align: no instruction of it may access
+# unaligned data (TMS570 start-up code may enable alignment faults).
+# armebv7r-none-eabihf is a tier-3 target: rustup has no precompiled core
+# for it, so core is built from rust-src (-Zbuild-std=core, allowed on the
+# pinned stable compiler with RUSTC_BOOTSTRAP=1).
+#
 # Variants (used by scripts/bench.sh for the code-size table; the defaults
 # are the plain link check):
 #   TMS570_VARIANT=name   names the cargo target sub-directory and the image
@@ -14,6 +26,11 @@
 # Capacities such as COP_SRDO_MAX_SRDO_IN_OBD pass through to build.rs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+case "${1:-}" in
+run | sizes | stack) exec scripts/tms570/run.sh "$1" ;;
+"" | link) ;;
+*) echo "usage: $0 [link|run|sizes|stack]" >&2; exit 2 ;;
+esac
 T=armebv7r-none-eabihf
 OUT=${CARGO_TARGET_DIR:-target}/tms570
 mkdir -p "$OUT"
@@ -29,9 +46,9 @@ build() { # $1 = extra rustflags, $2 = cargo target dir suffix
     # The flags go to every crate of the image (core included), so that a
     # Thumb-2 build is Thumb-2 throughout.
     RUSTC_BOOTSTRAP=1 CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-target}/tms570-$2" \
-        RUSTFLAGS="-C target-cpu=cortex-r4f $1" \
+        RUSTFLAGS="-C target-cpu=cortex-r4f -C target-feature=+strict-align $1" \
         cargo rustc -q --release --lib --crate-type staticlib -Zbuild-std=core --target $T \
-        2> >(grep -v -e 'unstable feature specified for `-Ctarget-feature`: `thumb-mode`' \
+        2> >(grep -v -e 'unstable feature specified for `-Ctarget-feature`: `\(thumb-mode\|strict-align\)`' \
             -e 'this feature is not stably supported' -e '^ *|$' -e '^ *= note: this feature' >&2) ||
         return 1 # (errexit does not reach into the command substitution)
     echo "${CARGO_TARGET_DIR:-target}/tms570-$2/$T/release/libcop.a"

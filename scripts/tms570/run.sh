@@ -1,0 +1,119 @@
+#!/usr/bin/env bash
+# Target programs for the TMS570 (Cortex-R4F, big-endian, VFPv3-D16,
+# hard-float), run under qemu-armeb (Linux user mode, Debian qemu-user).
+#
+#   run.sh run     the safety demo (examples_c/safety_demo: sensor and actuator
+#                  node, their dictionaries, App* callbacks, configuration
+#                  signature, the simulated bus inside the program) and the C
+#                  tests of c_tests/cfg, each a static target program with the
+#                  start-up and C library of examples_c/target; the demo's
+#                  frames and 0x13FF CRCs must equal the committed host trace.
+#                  Then the alignment check and the stack table.
+#   run.sh stack   only the stack table (scripts/tms570/stack.py)
+#   run.sh sizes   .text of a complete safety node and of an I/O node
+#
+# Called through scripts/tms570.sh. Prints "target run: N passed, 0 failed".
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+ROOT=$(pwd)
+T=armebv7r-none-eabihf
+OUT=$ROOT/${CARGO_TARGET_DIR:-target}/tms570-run
+mkdir -p "$OUT"
+RUSTFLAGS_T="-C target-cpu=cortex-r4f -C target-feature=+strict-align -Z emit-stack-sizes"
+GCC=arm-none-eabi-gcc
+CPU=(-mbig-endian -mcpu=cortex-r4f -mfpu=vfpv3-d16 -mfloat-abi=hard -marm -mno-unaligned-access)
+CFLAGS=("${CPU[@]}" -O2 -g -std=c11 -ffreestanding -fno-builtin -ffunction-sections -fdata-sections
+    -fstack-usage -nostdinc -isystem "$($GCC -print-file-name=include)"
+    -isystem "$ROOT/examples_c/target/libc/include" -I"$ROOT/include" -I"$ROOT/examples_c/sim"
+    -DCOP_HOST_SIMULATION -Wall -Wextra -Werror)
+LDFLAGS=("${CPU[@]}" -nostdlib -static -Wl,--gc-sections -Wl,-z,noexecstack -Wl,-e,_start)
+
+# archive <config dir> <name> <features>: libcop.a for the target, from the
+# application's copcfg.h/obdcfg.h; prints its path.
+archive() {
+    local dir="$OUT/cargo-$2"
+    COP_CONFIG_DIR="$ROOT/$1" RUSTC_BOOTSTRAP=1 CARGO_TARGET_DIR="$dir" RUSTFLAGS="$RUSTFLAGS_T" \
+        cargo rustc -q --release --lib --crate-type staticlib -Zbuild-std=core --target $T \
+        --features "$3" 2> >(grep -v -e 'unstable feature specified for `-Ctarget-feature`: `strict-align`' \
+            -e 'this feature is not stably supported' -e '^ *|$' -e '^ *= \(note\|help\)' -e '^$' >&2) ||
+        return 1
+    echo "$dir/$T/release/libcop.a"
+}
+
+# program <elf> <archive> <config dir> <sources...>: compile and link.
+program() {
+    local elf=$1 lib=$2 cfg=$3 obj=$OUT/obj/$(basename "$1" .elf)
+    shift 3
+    rm -rf "$obj" && mkdir -p "$obj"
+    local objs=() s o
+    for s in examples_c/target/start.S examples_c/target/libc/libc.c examples_c/sim/cdrv_sim.c "$@"; do
+        o="$obj/$(basename "$s").o"
+        (cd "$obj" && $GCC "${CFLAGS[@]}" -I"$ROOT/$cfg" -I"$ROOT/$(dirname "$s")" -c -o "$o" "$ROOT/$s")
+        objs+=("$o")
+    done
+    $GCC "${LDFLAGS[@]}" -o "$elf" "${objs[@]}" "$lib" -lgcc
+}
+
+# align <archive>...: every object of the archives (the library, core,
+# compiler_builtins) must say that it never accesses unaligned data. LLVM
+# writes Tag_CPU_unaligned_access "v6" for code that may (the default of
+# armv7r) and "None" under +strict-align; qemu-user cannot trap unaligned
+# accesses (Linux user mode runs with alignment checking off), so the
+# compiler's attribute is what is checked.
+align() {
+    local a members tagged
+    for a in "$@"; do
+        members=$(readelf -A "$a" | grep -c '^File: ')
+        tagged=$(readelf -A "$a" | grep -c 'Tag_CPU_unaligned_access: None')
+        if [ "$members" -eq 0 ] || [ "$tagged" -ne "$members" ] || readelf -A "$a" | grep -q 'Tag_CPU_unaligned_access: v6'; then
+            echo "FAIL alignment: $a: $tagged of $members objects have Tag_CPU_unaligned_access None"
+            readelf -A "$a" | grep -E '^File|unaligned'
+            return 1
+        fi
+        echo "ok   alignment: $(basename "$(dirname "$(dirname "$(dirname "$a")")")"): $members of $members objects Tag_CPU_unaligned_access None"
+    done
+}
+
+run_programs() {
+    local pass=0 fail=0 lib_demo lib_test name srcs
+    lib_demo=$(archive examples_c/safety_demo demo sim-instances)
+    lib_test=$(archive c_tests/cfg test sim-instances)
+    echo "archives: $lib_demo, $lib_test"
+    if align "$lib_demo" "$lib_test"; then pass=$((pass + 1)); else fail=$((fail + 1)); fi
+
+    local d=examples_c/safety_demo
+    program "$OUT/safety_demo.elf" "$lib_demo" $d \
+        $d/main.c $d/safety_node.c $d/sensor.c $d/actuator.c $d/objdict_sensor.c $d/objdict_actuator.c
+    if python3 cmake/expect_output.py --expect $d/expected.txt -- qemu-armeb "$OUT/safety_demo.elf" >"$OUT/safety_demo.log" 2>&1 &&
+        python3 cmake/expect_output.py --extract "^  can0 |^SRDO 0x1301 CRC" --compare $d/expected_trace.txt -- \
+            qemu-armeb "$OUT/safety_demo.elf" >>"$OUT/safety_demo.log" 2>&1; then
+        echo "ok   safety_demo (output as expected.txt; $(grep -c '^  can0 ' $d/expected_trace.txt) frames and the 0x13FF CRCs equal expected_trace.txt)"
+        pass=$((pass + 1))
+    else
+        echo "FAIL safety_demo"; cat "$OUT/safety_demo.log"; fail=$((fail + 1))
+    fi
+
+    # The C tests of the main test configuration (c_tests/CMakeLists.txt,
+    # cop_sim_test), with their sources as listed there; not test_abi, whose
+    # expected offsets are those of x86-64 (the Cortex-R4F layout is asserted
+    # at compile time by c_tests/abi_ilp32.c, CTest test_abi_ilp32*).
+    while read -r name srcs; do
+        local rc=0
+        # shellcheck disable=SC2086 # the list of sources
+        program "$OUT/$name.elf" "$lib_test" c_tests/cfg $(for f in $srcs test_util.c; do echo "c_tests/$f"; done)
+        qemu-armeb "$OUT/$name.elf" >"$OUT/$name.log" 2>&1 || rc=$?
+        if [ $rc -eq 0 ]; then
+            echo "ok   $name ($(grep -c . "$OUT/$name.log") lines)"
+            pass=$((pass + 1))
+        else
+            echo "FAIL $name (exit $rc)"; tail -20 "$OUT/$name.log"; fail=$((fail + 1))
+        fi
+    done < <(sed -n 's/^cop_test_program(\([a-z_0-9]*\) cop_sim_test \([^$]*\))$/\1 \2/p' c_tests/CMakeLists.txt | grep -v '^test_abi ')
+    echo "target run: $pass passed, $fail failed"
+    [ $fail -eq 0 ]
+}
+
+case "${1:-run}" in
+run) run_programs ;;
+*) echo "usage: $0 run|stack|sizes" >&2; exit 2 ;;
+esac
