@@ -74,6 +74,29 @@ align() {
     done
 }
 
+# stack_table <archive>: every function the archive exports (the Ccm*/Cop*
+# API and the stack callbacks an objdict.h names), linked with the safety
+# demo's application so that its callbacks, the simulated driver and the C
+# library are in the graph; the table is scripts/tms570/stack.py's.
+STACK_LIMIT_CCMPROCESS=2560
+stack_table() {
+    local lib=$1 objs=() s
+    shift
+    arm-none-eabi-nm --target=elf32-bigarm -g --defined-only "$lib" 2>/dev/null |
+        awk '$2 == "T" {print $3}' | grep -Ev '^(__|mem|_R|rust_)' | sort -u >"$OUT/exported.txt"
+    for s in "$OUT"/obj/safety_demo/*.o; do objs+=("$s"); done
+    $GCC "${LDFLAGS[@]}" -o "$OUT/stack.elf" "${objs[@]}" \
+        $(sed 's/^/-Wl,-u,/' "$OUT/exported.txt") "$lib" -lgcc
+    # Indirect calls: a dictionary access calls OBD callbacks (the functions
+    # in the dictionary tables, not App* or ObdInitRam*); the demo's
+    # SensorCycle/ActuatorCycle pointers stay in safety_node.c.
+    python3 scripts/tms570/stack.py --elf "$OUT/stack.elf" --su "$OUT/obj/safety_demo" \
+        --entries "$OUT/exported.txt" --report CcmProcess --report main \
+        --callbacks '^(App|ObdInitRam)' --nonnesting '^App' --stop '^(App|Cdrv|Tgt|Obd|Sim|Safety|Sensor|Actuator)' \
+        --app-pointers '^(SensorCycle|ActuatorCycle)$' --indirect 'ObjectDictionary=^(?!App|ObdInitRam)' \
+        --limit CcmProcess=$STACK_LIMIT_CCMPROCESS "$@"
+}
+
 run_programs() {
     local pass=0 fail=0 lib_demo lib_test name srcs
     lib_demo=$(archive examples_c/safety_demo demo sim-instances)
@@ -109,11 +132,21 @@ run_programs() {
             echo "FAIL $name (exit $rc)"; tail -20 "$OUT/$name.log"; fail=$((fail + 1))
         fi
     done < <(sed -n 's/^cop_test_program(\([a-z_0-9]*\) cop_sim_test \([^$]*\))$/\1 \2/p' c_tests/CMakeLists.txt | grep -v '^test_abi ')
+    if stack_table "$lib_demo" >"$OUT/stack.txt" 2>"$OUT/stack.err"; then
+        echo "ok   stack: $(grep -m1 'stack CcmProcess' "$OUT/stack.txt" | sed 's/  */ /g') (limit $STACK_LIMIT_CCMPROCESS)"
+        pass=$((pass + 1))
+    else
+        echo "FAIL stack"; cat "$OUT/stack.err"; fail=$((fail + 1))
+    fi
     echo "target run: $pass passed, $fail failed"
     [ $fail -eq 0 ]
 }
 
 case "${1:-run}" in
 run) run_programs ;;
+stack)
+    [ -f "$OUT/obj/safety_demo/main.c.o" ] || run_programs >/dev/null
+    stack_table "$(archive examples_c/safety_demo demo sim-instances)" --markdown
+    ;;
 *) echo "usage: $0 run|stack|sizes" >&2; exit 2 ;;
 esac
