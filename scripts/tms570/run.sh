@@ -142,8 +142,48 @@ run_programs() {
     [ $fail -eq 0 ]
 }
 
+# text_of <elf>: "<whole .text> <part from libcop.a>" from the link map.
+text_of() {
+    python3 - "$1.map" "$1" <<'PY'
+import re, subprocess, sys
+total = int(subprocess.run(["arm-none-eabi-size", "-A", sys.argv[2]], check=True,
+                           stdout=subprocess.PIPE, universal_newlines=True).stdout
+            .split("\n.text ")[1].split()[0])
+lib, pending, in_text = 0, False, False
+for line in open(sys.argv[1]):
+    if re.match(r"^\.text\b", line):
+        in_text = True
+    elif re.match(r"^\.\S", line):
+        in_text = False
+    if not in_text:
+        continue
+    m = re.match(r"^\s+(?:\.text\S*\s+)?0x[0-9a-f]+\s+0x([0-9a-f]+)\s+(\S+)$", line)
+    if m and "libcop.a(" in m.group(2):
+        lib += int(m.group(1), 16)
+print(total, lib)
+PY
+}
+
+# sizes: .text of two complete images, each with its own libcop.a built from
+# its copcfg.h/obdcfg.h: the safety demo (two safety nodes' application,
+# SRDO/GFC, the simulated driver, the C library) and the I/O node example.
+sizes() {
+    local lib_demo lib_io d=examples_c/safety_demo i=examples_c/io_node demo io
+    lib_demo=$(archive $d demo sim-instances)
+    lib_io=$(archive $i io sim-instances)
+    LDFLAGS+=(-Wl,-Map,"$OUT/safety_node.elf.map")
+    program "$OUT/safety_node.elf" "$lib_demo" $d \
+        $d/main.c $d/safety_node.c $d/sensor.c $d/actuator.c $d/objdict_sensor.c $d/objdict_actuator.c
+    LDFLAGS[-1]=-Wl,-Map,"$OUT/io_node.elf.map"
+    program "$OUT/io_node.elf" "$lib_io" $i $i/main.c $i/objdict.c
+    read -r -a demo < <(text_of "$OUT/safety_node.elf")
+    read -r -a io < <(text_of "$OUT/io_node.elf")
+    echo "target-size: safety node .text ${demo[0]} bytes (libcop.a ${demo[1]}), I/O node .text ${io[0]} bytes (libcop.a ${io[1]}); ARM mode, opt-level of Cargo.toml, +strict-align"
+}
+
 case "${1:-run}" in
 run) run_programs ;;
+sizes) sizes ;;
 stack)
     [ -f "$OUT/obj/safety_demo/main.c.o" ] || run_programs >/dev/null
     stack_table "$(archive examples_c/safety_demo demo sim-instances)" --markdown
