@@ -132,6 +132,16 @@ run_programs() {
             echo "FAIL $name (exit $rc)"; tail -20 "$OUT/$name.log"; fail=$((fail + 1))
         fi
     done < <(sed -n 's/^cop_test_program(\([a-z_0-9]*\) cop_sim_test \([^$]*\))$/\1 \2/p' c_tests/CMakeLists.txt | grep -v '^test_abi ')
+    # The HALCoGen DCAN/RTI driver sketch of docs/tms570.md compiles (C99,
+    # pedantic) against the library's headers and stub HALCoGen prototypes.
+    if $GCC "${CPU[@]}" -std=c99 -pedantic -Wall -Wextra -Werror -ffreestanding -nostdinc \
+        -isystem "$($GCC -print-file-name=include)" -isystem examples_c/target/libc/include \
+        -Iinclude -I$d -c -o "$OUT/cdrv_dcan.o" examples_c/target/halcogen/cdrv_dcan.c; then
+        echo "ok   examples_c/target/halcogen/cdrv_dcan.c compiles ($(arm-none-eabi-size "$OUT/cdrv_dcan.o" | awk 'NR==2 {print $1}') bytes .text)"
+        pass=$((pass + 1))
+    else
+        echo "FAIL examples_c/target/halcogen/cdrv_dcan.c"; fail=$((fail + 1))
+    fi
     if stack_table "$lib_demo" >"$OUT/stack.txt" 2>"$OUT/stack.err"; then
         echo "ok   stack: $(grep -m1 'stack CcmProcess' "$OUT/stack.txt" | sed 's/  */ /g') (limit $STACK_LIMIT_CCMPROCESS)"
         pass=$((pass + 1))
