@@ -301,6 +301,7 @@ def main():
     if args.entries:
         with open(args.entries) as f:
             entries += [line.strip() for line in f if line.strip()]
+    entries = list(dict.fromkeys(entries))  # once each, in order
     # Functions with one body share an address; the disassembly names one.
     nm = subprocess.run([args.objdump.replace("objdump", "nm"), args.elf], check=True,
                         stdout=subprocess.PIPE, universal_newlines=True).stdout
