@@ -49,7 +49,7 @@ build() { # $1 = extra rustflags, $2 = cargo target dir suffix
         RUSTFLAGS="-C target-cpu=cortex-r4f -C target-feature=+strict-align $1" \
         cargo rustc -q --release --lib --crate-type staticlib -Zbuild-std=core --target $T \
         2> >(grep -v -e 'unstable feature specified for `-Ctarget-feature`: `\(thumb-mode\|strict-align\)`' \
-            -e 'this feature is not stably supported' -e '^ *|$' -e '^ *= note: this feature' >&2) ||
+            -e 'this feature is not stably supported' -e '^ *|$' -e '^ *= \(note\|help\)' -e '^$' >&2) ||
         return 1 # (errexit does not reach into the command substitution)
     echo "${CARGO_TARGET_DIR:-target}/tms570-$2/$T/release/libcop.a"
 }

@@ -78,7 +78,7 @@ align() {
 # API and the stack callbacks an objdict.h names), linked with the safety
 # demo's application so that its callbacks, the simulated driver and the C
 # library are in the graph; the table is scripts/tms570/stack.py's.
-STACK_LIMIT_CCMPROCESS=2560
+STACK_LIMIT_CCMPROCESS=2048
 stack_table() {
     local lib=$1 objs=() s
     shift
