@@ -68,7 +68,16 @@ if [ -n "$bad" ]; then
     exit 1
 fi
 
-# 2. A real big-endian link against a C main.
+# 2. No object of the archive may access unaligned data (+strict-align).
+members=$(readelf -A "$ARM_LIB" | grep -c '^File: ')
+aligned=$(readelf -A "$ARM_LIB" | grep -c 'Tag_CPU_unaligned_access: None')
+if [ "$members" -eq 0 ] || [ "$aligned" -ne "$members" ]; then
+    echo "FAIL: $aligned of $members objects have Tag_CPU_unaligned_access None"
+    exit 1
+fi
+echo "alignment: $members of $members objects Tag_CPU_unaligned_access None"
+
+# 3. A real big-endian link against a C main.
 ELF="$OUT/link_check.elf"
 [ "$VARIANT" = arm ] || ELF="$OUT/link_check-$VARIANT.elf"
 CFLAGS="-mcpu=cortex-r4f -mbig-endian -mbe32 -mfloat-abi=hard -mfpu=vfpv3-d16 -Os -ffunction-sections -fdata-sections"

@@ -17,7 +17,10 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 ROOT=$(pwd)
 T=armebv7r-none-eabihf
-OUT=$ROOT/${CARGO_TARGET_DIR:-target}/tms570-run
+case "${CARGO_TARGET_DIR:-target}" in
+/*) OUT=$CARGO_TARGET_DIR/tms570-run ;;
+*) OUT=$ROOT/${CARGO_TARGET_DIR:-target}/tms570-run ;;
+esac
 mkdir -p "$OUT"
 RUSTFLAGS_T="-C target-cpu=cortex-r4f -C target-feature=+strict-align -Z emit-stack-sizes"
 GCC=arm-none-eabi-gcc
