@@ -5,7 +5,7 @@
 #   run.sh run     the safety demo (examples_c/safety_demo: sensor and actuator
 #                  node, their dictionaries, App* callbacks, configuration
 #                  signature, the simulated bus inside the program) and the C
-#                  tests of c_tests/cfg, each a static target program with the
+#                  tests of c_tests/cfg and c_tests/cfg_manual, each a static target program with the
 #                  start-up and C library of examples_c/target; the demo's
 #                  frames and 0x13FF CRCs must equal the committed host trace.
 #                  Then the alignment check and the stack table.
@@ -51,7 +51,8 @@ program() {
     local objs=() s o
     for s in examples_c/target/start.S examples_c/target/libc/libc.c examples_c/sim/cdrv_sim.c "$@"; do
         o="$obj/$(basename "$s").o"
-        (cd "$obj" && $GCC "${CFLAGS[@]}" -I"$ROOT/$cfg" -I"$ROOT/$(dirname "$s")" -c -o "$o" "$ROOT/$s")
+        # shellcheck disable=SC2086 # EXTRA_CFLAGS: -D options of a test
+        (cd "$obj" && $GCC "${CFLAGS[@]}" ${EXTRA_CFLAGS:-} -I"$ROOT/$cfg" -I"$ROOT/$(dirname "$s")" -c -o "$o" "$ROOT/$s")
         objs+=("$o")
     done
     $GCC "${LDFLAGS[@]}" -o "$elf" "${objs[@]}" "$lib" -lgcc
@@ -119,22 +120,32 @@ run_programs() {
         echo "FAIL safety_demo"; cat "$OUT/safety_demo.log"; fail=$((fail + 1))
     fi
 
-    # The C tests of the main test configuration (c_tests/CMakeLists.txt,
-    # cop_sim_test), with their sources as listed there; not test_abi, whose
-    # expected offsets are those of x86-64 (the Cortex-R4F layout is asserted
-    # at compile time by c_tests/abi_ilp32.c, CTest test_abi_ilp32*).
-    while read -r name srcs; do
-        local rc=0
+    # The C tests of c_tests/cfg (the main test configuration) and
+    # c_tests/cfg_manual (the safety manual's application code, static SRDO
+    # mapping), with sources and defines as c_tests/CMakeLists.txt builds
+    # them for CTest; not test_abi, whose expected offsets are those of
+    # x86-64 (the Cortex-R4F layout is asserted at compile time by
+    # c_tests/abi_ilp32.c, CTest test_abi_ilp32*).
+    local name cfg defs srcs lib
+    declare -A libs=([c_tests/cfg]=$lib_test)
+    libs[c_tests/cfg_manual]=$(archive c_tests/cfg_manual manual sim-instances)
+    if align "${libs[c_tests/cfg_manual]}"; then pass=$((pass + 1)); else fail=$((fail + 1)); fi
+    while read -r name cfg defs srcs; do
+        local rc=0 dflags=()
+        lib=${libs[$cfg]}
+        [ "$defs" = - ] || for x in ${defs//,/ }; do dflags+=("-D$x"); done
         # shellcheck disable=SC2086 # the list of sources
-        program "$OUT/$name.elf" "$lib_test" c_tests/cfg $(for f in $srcs test_util.c; do echo "c_tests/$f"; done)
+        EXTRA_CFLAGS="${dflags[*]}" program "$OUT/$name.elf" "$lib" "$cfg" \
+            $(for f in $srcs test_util.c; do echo "c_tests/$f"; done)
         qemu-armeb "$OUT/$name.elf" >"$OUT/$name.log" 2>&1 || rc=$?
         if [ $rc -eq 0 ]; then
-            echo "ok   $name ($(grep -c . "$OUT/$name.log") lines)"
+            echo "ok   $name ($cfg; $(tail -1 "$OUT/$name.log"))"
             pass=$((pass + 1))
         else
             echo "FAIL $name (exit $rc)"; tail -20 "$OUT/$name.log"; fail=$((fail + 1))
         fi
-    done < <(sed -n 's/^cop_test_program(\([a-z_0-9]*\) cop_sim_test \([^$]*\))$/\1 \2/p' c_tests/CMakeLists.txt | grep -v '^test_abi ')
+    done < <(python3 scripts/tms570/c_tests.py c_tests/CMakeLists.txt cfg cfg_manual | grep -v '^test_abi ')
+
     # The HALCoGen DCAN/RTI driver sketch of docs/tms570.md compiles (C99,
     # pedantic) against the library's headers and stub HALCoGen prototypes.
     if $GCC "${CPU[@]}" -std=c99 -pedantic -Wall -Wextra -Werror -ffreestanding -nostdinc \
