@@ -10,7 +10,7 @@ Frame sizes:
     (address of the function, ULEB128 bytes);
   * C functions: the .su files of gcc -fstack-usage (DIR, searched
     recursively); a "dynamic" frame is an error;
-  * anything else (start-up assembly, libgcc helpers): the prologue in the
+  * anything else (start-up assembly, libgcc routines): the prologue in the
     disassembly (push/stmdb/vpush registers, sub sp), marked "asm".
 
 Calls come from the disassembly (arm-none-eabi-objdump -d): bl/blx <f> are
