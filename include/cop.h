@@ -217,7 +217,8 @@ tCopKernel DynDestroyOd(void);
 
 #if defined(COP_HOST_SIMULATION)
 /**
- * `CopSimSelectInstance`: host simulation only (`std` builds) — selects
+ * `CopSimSelectInstance`: simulation only (`sim-instances` builds, and so
+ * every `std` build) — selects
  * which of up to [`MAX_INSTANCES`] nodes the following `Ccm*` calls
  * address, so one process can run several nodes on a simulated bus.
  * Returns kCopSuccessful, or kCopIllegalInstance for an index out of range

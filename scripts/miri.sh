@@ -16,7 +16,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-target}/miri"
-MIRI=(cargo +nightly miri test -q)
+. scripts/toolchains.sh
+MIRI=(cargo "+$COP_NIGHTLY" miri test -q)
 
 if [ "${1:-}" = "--serial" ] || [ "$(nproc 2>/dev/null || echo 1)" -lt 2 ]; then
     exec "${MIRI[@]}" --lib --tests

@@ -7,6 +7,8 @@
 set -euo pipefail
 
 MODE="${1:-all}"
+# shellcheck source=scripts/toolchains.sh
+. "$(dirname "$0")/toolchains.sh"
 CBINDGEN_VERSION=0.29.4
 PY_CANOPEN_VERSION=2.4.1
 PY_CAN_VERSION=4.6.1
@@ -45,14 +47,20 @@ fi
 
 apt_install gcc-arm-none-eabi binutils-arm-none-eabi \
     gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user valgrind
+# qemu-user provides qemu-armeb, which runs the TMS570 target programs (scripts/tms570.sh)
 
 rustup component list --installed 2>/dev/null | grep -q '^rust-src' || { log "rustup: rust-src"; rustup component add rust-src; }
 rustup component list --installed 2>/dev/null | grep -q '^clippy' || { log "rustup: clippy"; rustup component add clippy; }
 rustup component list --installed 2>/dev/null | grep -q '^rustfmt' || { log "rustup: rustfmt"; rustup component add rustfmt; }
 rustup target list --installed | grep -q '^s390x-unknown-linux-gnu$' || { log "rustup: s390x target"; rustup target add s390x-unknown-linux-gnu; }
-if ! rustup run nightly cargo miri --version >/dev/null 2>&1; then
-    log "rustup: nightly with miri"
-    rustup toolchain install nightly --profile minimal --component miri,rust-src >/dev/null
+rustup run "$COP_STABLE" rustc -V >/dev/null 2>&1 || {
+    log "rustup: $COP_STABLE"
+    rustup toolchain install "$COP_STABLE" --profile minimal --component rustfmt,clippy,rust-src \
+        --target s390x-unknown-linux-gnu >/dev/null
+}
+if ! rustup run "$COP_NIGHTLY" cargo miri --version >/dev/null 2>&1; then
+    log "rustup: $COP_NIGHTLY with miri"
+    rustup toolchain install "$COP_NIGHTLY" --profile minimal --component miri,rust-src >/dev/null
 fi
 
 if ! cbindgen --version 2>/dev/null | grep -q "$CBINDGEN_VERSION"; then
@@ -60,9 +68,9 @@ if ! cbindgen --version 2>/dev/null | grep -q "$CBINDGEN_VERSION"; then
     cargo install cbindgen --version "$CBINDGEN_VERSION" --locked --quiet
 fi
 
-if ! cargo fuzz --version >/dev/null 2>&1; then
-    log "cargo install cargo-fuzz"
-    cargo install cargo-fuzz --locked --quiet
+if ! cargo fuzz --version 2>/dev/null | grep -q "$COP_CARGO_FUZZ_VERSION"; then
+    log "cargo install cargo-fuzz $COP_CARGO_FUZZ_VERSION"
+    cargo install cargo-fuzz --version "$COP_CARGO_FUZZ_VERSION" --locked --quiet
 fi
 
 if ! python3 -c "import canopen, can, sys; sys.exit(0 if canopen.__version__ == '$PY_CANOPEN_VERSION' else 1)" 2>/dev/null; then

@@ -66,6 +66,8 @@ run_stage() {
         [ -x scripts/tms570.sh ] || { echo "target check: scripts/tms570.sh missing"; exit 1; }
         stage "TMS570 (armebv7r-none-eabihf) build and link check"
         scripts/tms570.sh
+        stage "TMS570 target programs under qemu-armeb (safety demo, C tests), alignment, stack"
+        scripts/tms570.sh run
         ;;
     bigendian)
         [ -x scripts/bigendian.sh ] || { echo "big-endian run: scripts/bigendian.sh missing"; exit 1; }

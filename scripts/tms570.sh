@@ -4,6 +4,18 @@
 # provides only the documented application symbols, fails on any other
 # undefined symbol, and prints the sizes.
 #
+#   scripts/tms570.sh          the link check (above)
+#   scripts/tms570.sh run      also: the safety demo and the C tests as target
+#                              programs under qemu-armeb, the alignment check
+#                              and the stack table (scripts/tms570/run.sh)
+#   scripts/tms570.sh sizes    .text of a complete safety node and an I/O node
+#
+# The archive is built with +strict-align: no instruction of it may access
+# unaligned data (TMS570 start-up code may enable alignment faults).
+# armebv7r-none-eabihf is a tier-3 target: rustup has no precompiled core
+# for it, so core is built from rust-src (-Zbuild-std=core, allowed on the
+# pinned stable compiler with RUSTC_BOOTSTRAP=1).
+#
 # Variants (used by scripts/bench.sh for the code-size table; the defaults
 # are the plain link check):
 #   TMS570_VARIANT=name   names the cargo target sub-directory and the image
@@ -14,6 +26,11 @@
 # Capacities such as COP_SRDO_MAX_SRDO_IN_OBD pass through to build.rs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+case "${1:-}" in
+run | sizes | stack) exec scripts/tms570/run.sh "$1" ;;
+"" | link) ;;
+*) echo "usage: $0 [link|run|sizes|stack]" >&2; exit 2 ;;
+esac
 T=armebv7r-none-eabihf
 OUT=${CARGO_TARGET_DIR:-target}/tms570
 mkdir -p "$OUT"
@@ -29,10 +46,10 @@ build() { # $1 = extra rustflags, $2 = cargo target dir suffix
     # The flags go to every crate of the image (core included), so that a
     # Thumb-2 build is Thumb-2 throughout.
     RUSTC_BOOTSTRAP=1 CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-target}/tms570-$2" \
-        RUSTFLAGS="-C target-cpu=cortex-r4f $1" \
+        RUSTFLAGS="-C target-cpu=cortex-r4f -C target-feature=+strict-align $1" \
         cargo rustc -q --release --lib --crate-type staticlib -Zbuild-std=core --target $T \
-        2> >(grep -v -e 'unstable feature specified for `-Ctarget-feature`: `thumb-mode`' \
-            -e 'this feature is not stably supported' -e '^ *|$' -e '^ *= note: this feature' >&2) ||
+        2> >(grep -v -e 'unstable feature specified for `-Ctarget-feature`: `\(thumb-mode\|strict-align\)`' \
+            -e 'this feature is not stably supported' -e '^ *|$' -e '^ *= \(note\|help\)' -e '^$' >&2) ||
         return 1 # (errexit does not reach into the command substitution)
     echo "${CARGO_TARGET_DIR:-target}/tms570-$2/$T/release/libcop.a"
 }
@@ -51,7 +68,16 @@ if [ -n "$bad" ]; then
     exit 1
 fi
 
-# 2. A real big-endian link against a C main.
+# 2. No object of the archive may access unaligned data (+strict-align).
+members=$(readelf -A "$ARM_LIB" | grep -c '^File: ')
+aligned=$(readelf -A "$ARM_LIB" | grep -c 'Tag_CPU_unaligned_access: None')
+if [ "$members" -eq 0 ] || [ "$aligned" -ne "$members" ]; then
+    echo "FAIL: $aligned of $members objects have Tag_CPU_unaligned_access None"
+    exit 1
+fi
+echo "alignment: $members of $members objects Tag_CPU_unaligned_access None"
+
+# 3. A real big-endian link against a C main.
 ELF="$OUT/link_check.elf"
 [ "$VARIANT" = arm ] || ELF="$OUT/link_check-$VARIANT.elf"
 CFLAGS="-mcpu=cortex-r4f -mbig-endian -mbe32 -mfloat-abi=hard -mfpu=vfpv3-d16 -Os -ffunction-sections -fdata-sections"

@@ -522,6 +522,7 @@ impl Stack {
         e
     }
 
+    #[inline(never)] // its frame stays out of poll_work (worst-case stack, docs/tms570.md)
     fn timers(&mut self, port: &mut impl CanPort, now: Ticks) {
         if let Some(f) = self.sdo.poll(&self.od, now) {
             let _ = port.send(&f, Priority::Low);
@@ -534,6 +535,7 @@ impl Stack {
         self.emcy.poll(port, now);
     }
 
+    #[inline(never)] // its frame stays out of poll_work (worst-case stack, docs/tms570.md)
     fn on_frame(&mut self, port: &mut impl CanPort, rx: &RxFrame, now: Ticks) {
         if !self.connected || self.state == NmtState::Initialisation {
             return;
@@ -649,6 +651,7 @@ impl Stack {
         slave::queue_reset(&mut self.queue, node);
     }
 
+    #[inline(never)] // its frame stays out of poll_work (worst-case stack, docs/tms570.md)
     fn run(&mut self, i: Internal, port: &mut impl CanPort, now: Ticks) {
         match i {
             Internal::RestoreApplication => {

@@ -228,12 +228,13 @@ fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Optio
     not_handled
 }
 
-/// `CopSimSelectInstance`: host simulation only (`std` builds) — selects
+/// `CopSimSelectInstance`: simulation only (`sim-instances` builds, and so
+/// every `std` build) — selects
 /// which of up to [`MAX_INSTANCES`] nodes the following `Ccm*` calls
 /// address, so one process can run several nodes on a simulated bus.
 /// Returns kCopSuccessful, or kCopIllegalInstance for an index out of range
 /// (or when called from inside a callback).
-#[cfg(feature = "std")]
+#[cfg(feature = "sim-instances")]
 #[unsafe(no_mangle)]
 pub extern "C" fn CopSimSelectInstance(bInstance_p: super::types::BYTE) -> tCopKernel {
     if select(usize::from(bInstance_p)) {

@@ -28,14 +28,14 @@ pub mod types;
 
 include!(concat!(env!("OUT_DIR"), "/abi_symbol.rs"));
 
-/// Instances: one on a target. Host builds (`std`) keep several so that a
-/// simulation can run more than one node in one process; the harness
-/// selects the node the next `Ccm*` calls address with
-/// `CopSimSelectInstance`.
-#[cfg(feature = "std")]
+/// Instances: one on a target. Simulation builds (`sim-instances`, part of
+/// `std`) keep several so that a simulation can run more than one node in
+/// one program; the harness selects the node the next `Ccm*` calls address
+/// with `CopSimSelectInstance`.
+#[cfg(feature = "sim-instances")]
 pub const MAX_INSTANCES: usize = 8;
 /// Instances: one on a target.
-#[cfg(not(feature = "std"))]
+#[cfg(not(feature = "sim-instances"))]
 pub const MAX_INSTANCES: usize = 1;
 
 #[cfg(not(any(test, feature = "std")))]
