@@ -180,7 +180,8 @@ static void StartUp (void)
     /* the slave table */
     CHECK_RET(CcmDefineSlaveTab(NULL, 1), kCopInvalidParam);
     CHECK_RET(CcmDefineSlaveTab(abTwice, 2), kCopNmtmSlaveNodeExist);
-    CHECK_RET(CcmDefineSlaveTab(abZero, 1), kCopNmtmInvalidSlaveNodeId);
+    CHECK_RET(CcmDefineSlaveTab(abZero, 1), kCopSuccessful);                 /* 0 = unused entry */
+    CHECK_RET(CcmNmtmGetSlaveInfo(ID_S, &Info), kCopNmtmSlaveEntryNotExist);
     CHECK_RET(CcmDefineSlaveTab(ab128, 1), kCopNmtmInvalidSlaveNodeId);
     CHECK_RET(CcmDefineSlaveTab(abFive, 5), kCopNmtmNoFreeSlaveEntry);      /* NMTM_MAX_SLAVE_ENTRIES 4 */
     CHECK_RET(CcmDefineSlaveTab(abSlaves, 1), kCopSuccessful);

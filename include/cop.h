@@ -261,7 +261,7 @@ tCopKernel CcmInitEmccEx(tAppEmccEventCallback pfnCallback_p);
 /**
  * `CcmEmccDefineProducerTab`: the producers (node-IDs) whose emergencies
  * are received on COB-ID 0x80 + node-ID; replaces the previous table (a
- * refused table keeps it). kCopInvalidParam (NULL with a count),
+ * refused table keeps it). Entries 0 are unused and skipped. kCopInvalidParam (NULL with a count),
  * kCopEmccNoFreeProducerEntry (more than `EMCC_MAX_CONSUMER`),
  * kCopEmccNodeIdInvalid (not 1..127, or this node), kCopEmccNodeIdExist
  * (a node twice), or the driver's code from `CdrvDefineCanId`.
@@ -283,8 +283,8 @@ tCopKernel CcmInitNmtm(void);
 tCopKernel CcmInitNmtmEx(tAppNmtmEventCallback pfnCallback_p);
 
 /**
- * `CcmDefineSlaveTab`: the slaves the master manages.
- * kCopInvalidParam (NULL with n > 0), kCopNmtmNoFreeSlaveEntry,
+ * `CcmDefineSlaveTab`: the slaves the master manages; entries 0 are
+ * unused and skipped. kCopInvalidParam (NULL with n > 0), kCopNmtmNoFreeSlaveEntry,
  * kCopNmtmInvalidSlaveNodeId, kCopNmtmSlaveNodeExist.
  *
  * # Safety

@@ -115,21 +115,26 @@ impl NmtMaster {
     }
 
     /// `CcmDefineSlaveTab`: the slaves the master manages (replaces the
-    /// list). Codes: kCopNmtmNoFreeSlaveEntry (more than the capacity),
+    /// list); node-ID 0 marks an unused entry and is skipped. Codes:
+    /// kCopNmtmNoFreeSlaveEntry (more used entries than the capacity),
     /// kCopNmtmInvalidSlaveNodeId, kCopNmtmSlaveNodeExist (duplicate). On
     /// error the previous list is kept.
     pub fn define_slaves(&mut self, nodes: &[u8]) -> CopResult {
-        if nodes.len() > CAPACITY {
+        // Node-ID 0 marks an unused entry of the application's table
+        // (tables sized for every possible slave, filled as slaves are
+        // added): skipped, not refused.
+        let used = || nodes.iter().filter(|n| **n != 0);
+        if used().count() > CAPACITY {
             return Err(CopKernel::NmtmNoFreeSlaveEntry);
         }
-        for (i, n) in nodes.iter().enumerate() {
+        for (i, n) in used().enumerate() {
             valid_node(*n)?;
-            if nodes.iter().take(i).any(|m| m == n) {
+            if used().take(i).any(|m| m == n) {
                 return Err(CopKernel::NmtmSlaveNodeExist);
             }
         }
         self.slaves = Self::new().slaves;
-        for (s, n) in self.slaves.iter_mut().zip(nodes) {
+        for (s, n) in self.slaves.iter_mut().zip(used()) {
             s.node = *n;
         }
         Ok(())
@@ -318,9 +323,13 @@ mod tests {
     fn slave_table_checks() {
         let mut m = NmtMaster::new();
         assert_eq!(
-            m.define_slaves(&[0]),
+            m.define_slaves(&[128]),
             Err(CopKernel::NmtmInvalidSlaveNodeId)
         );
+        // 0 = unused entry: skipped (a table of 5 with 2 used fits 4).
+        assert!(m.define_slaves(&[0, 5, 0, 6, 0]).is_ok());
+        assert_eq!(m.slave_info(5).map(|i| i.flags), Ok(0x01));
+        assert_eq!(m.slave_info(0), Err(CopKernel::NmtmInvalidSlaveNodeId));
         assert_eq!(m.define_slaves(&[5, 5]), Err(CopKernel::NmtmSlaveNodeExist));
         assert!(m.define_slaves(&[5, 6]).is_ok());
         assert_eq!(
