@@ -5,9 +5,11 @@
 //! needs, in this order of precedence:
 //!
 //! 1. the application's own headers, when `COP_CONFIG_DIR` names the folder
-//!    holding `copcfg.h` (and optionally `obdcfg.h`): they are run through the
-//!    C preprocessor together with `include/copdef.h`, so the values are
-//!    exactly what the application's C compiler sees;
+//!    holding `copcfg.h` (and optionally `obdcfg.h`; `COP_OBDCFG_DIR` names
+//!    another folder for `obdcfg.h`, as ODBuilder projects keep it beside
+//!    `objdict.h`): they are run through the C preprocessor together with
+//!    `include/copdef.h`, so the values are exactly what the application's C
+//!    compiler sees;
 //! 2. otherwise Cargo features (`srdo-static-mapping`, ...) and `COP_*`
 //!    environment variables for capacities;
 //! 3. otherwise the documented defaults (manual L-1077d section 2.4).
@@ -53,6 +55,7 @@ struct Config {
     nmts_use_lifeguarding: bool,
     dyn_od_pool_size: u32,
     obd_use_dynamic_od: bool,
+    cob_more_than_128_entries: bool,
 }
 
 const KEYS: &[&str] = &[
@@ -87,6 +90,7 @@ const KEYS: &[&str] = &[
     "OBD_USE_DYNAMIC_OD",
     "COP_USE_SMALL_TIME",
     "COP_MAX_INSTANCES",
+    "COB_MORE_THAN_128_ENTRIES",
 ];
 
 fn feature(name: &str) -> bool {
@@ -172,17 +176,18 @@ fn from_features() -> Config {
         dyn_od_pool_size: env_u32("COP_OBD_DYNAMIC_POOL_SIZE", 4096),
         // The dynamic OD is part of the Rust build unless switched off.
         obd_use_dynamic_od: env_u32("COP_OBD_USE_DYNAMIC_OD", 1) != 0,
+        cob_more_than_128_entries: env_u32("COP_COB_MORE_THAN_128_ENTRIES", 0) != 0,
     }
 }
 
 /// Runs the application's copcfg.h/obdcfg.h through the C preprocessor after
 /// include/copdef.h has filled in every default, and reads back the values.
-fn from_headers(dir: &Path, include: &Path) -> Config {
+fn from_headers(dir: &Path, obd_dir: &Path, include: &Path) -> Config {
     let out = PathBuf::from(env::var("OUT_DIR").unwrap());
     let probe = out.join("cop_config_probe.c");
     let mut src = String::new();
     src.push_str("#include \"copcfg.h\"\n");
-    if dir.join("obdcfg.h").exists() {
+    if obd_dir.join("obdcfg.h").exists() {
         src.push_str("#include \"obdcfg.h\"\n");
     }
     src.push_str("#include \"copdef.h\"\n");
@@ -195,6 +200,7 @@ fn from_headers(dir: &Path, include: &Path) -> Config {
     let expanded = cc::Build::new()
         .file(&probe)
         .include(dir)
+        .include(obd_dir)
         .include(include)
         .cargo_metadata(false)
         .expand();
@@ -260,6 +266,7 @@ fn from_headers(dir: &Path, include: &Path) -> Config {
         nmts_use_lifeguarding: flag("NMTS_USE_LIFEGUARDING"),
         dyn_od_pool_size: num("OBD_DYNAMIC_POOL_SIZE"),
         obd_use_dynamic_od: flag("OBD_USE_DYNAMIC_OD"),
+        cob_more_than_128_entries: flag("COB_MORE_THAN_128_ENTRIES"),
     }
 }
 
@@ -339,13 +346,25 @@ fn main() {
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-changed=include/copdef.h");
     println!("cargo:rerun-if-env-changed=COP_CONFIG_DIR");
+    println!("cargo:rerun-if-env-changed=COP_OBDCFG_DIR");
 
     let cfg = match env::var_os("COP_CONFIG_DIR") {
         Some(dir) if !dir.is_empty() => {
             let dir = PathBuf::from(dir);
+            // obdcfg.h from its own folder when COP_OBDCFG_DIR names one.
+            let obd_dir = match env::var_os("COP_OBDCFG_DIR") {
+                Some(d) if !d.is_empty() => PathBuf::from(d),
+                _ => dir.clone(),
+            };
+            if !obd_dir.is_dir() {
+                panic!("COP_OBDCFG_DIR={} is not a folder", obd_dir.display());
+            }
             println!("cargo:rerun-if-changed={}", dir.join("copcfg.h").display());
-            println!("cargo:rerun-if-changed={}", dir.join("obdcfg.h").display());
-            from_headers(&dir, &include)
+            println!(
+                "cargo:rerun-if-changed={}",
+                obd_dir.join("obdcfg.h").display()
+            );
+            from_headers(&dir, &obd_dir, &include)
         }
         _ => from_features(),
     };
@@ -585,6 +604,7 @@ fn main() {
         ("cdrv_timestamp", cfg.cdrv_timestamp),
         ("cdrv_can20b", cfg.cdrv_can20b),
         ("nmts_use_lifeguarding", cfg.nmts_use_lifeguarding),
+        ("cob_hdl_word", cfg.cob_more_than_128_entries),
     ];
     for (name, on) in flags {
         println!("cargo::rustc-check-cfg=cfg({name})");

@@ -36,3 +36,12 @@ _Static_assert(offsetof(tObdRamParam, m_RxBuffHigh) == 24, "tObdRamParam.m_RxBuf
 _Static_assert(offsetof(tObdRamParam, m_wSrdoCount) == 56 && sizeof(tObdRamParam) == 60, "tObdRamParam");
 _Static_assert(sizeof(tSrdoMappParam) == 4 + 4 * SRDO_MAX_MAPPENTRIES, "tSrdoMappParam");
 _Static_assert(sizeof(tEmcParam) == 10 && sizeof(tSrdoCommuParam) == 4, "tEmcParam, tSrdoCommuParam");
+/* tCobParam (vendored SYS TEC cob.h, ARM, CAN 2.0A, BYTE handle): m_CobId 0,
+ * m_bCobType 2, m_bSize 3, m_fpCallback 4, m_pArg 8, m_CobHdl 12, m_pbData 16,
+ * m_pbRecvdSize 20, sizeof 24 (the same with a WORD handle). */
+_Static_assert(offsetof(tCobParam, m_bCobType) == 2 && offsetof(tCobParam, m_bSize) == 3 &&
+               offsetof(tCobParam, m_fpCallback) == 4 && offsetof(tCobParam, m_pArg) == 8 &&
+               offsetof(tCobParam, m_CobHdl) == 12 && offsetof(tCobParam, m_pbData) == 16 &&
+               offsetof(tCobParam, m_pbRecvdSize) == 20 && sizeof(tCobParam) == 24, "tCobParam");
+/* tNmtmSlaveInfo (nmtm.h): three BYTEs, alignment 1. */
+_Static_assert(sizeof(tNmtmSlaveInfo) == 3 && offsetof(tNmtmSlaveInfo, m_bSlaveNodeState) == 2, "tNmtmSlaveInfo");

@@ -67,10 +67,15 @@ _Static_assert(offsetof(tEmcParam, m_abManufactErrorCode) == 3, "tEmcParam.m_abM
 _Static_assert(offsetof(tEmcParam, m_wAdditionalInfo) == 8, "tEmcParam.m_wAdditionalInfo");
 _Static_assert(sizeof(tEmcParam) == 10, "tEmcParam");
 /* tHbcProdParam {WORD; BYTE; BYTE} = 4, tNmtmSlaveParam {WORD; BYTE} = 4,
- * tNmtmSlaveInfo {BYTE; BYTE; WORD; BYTE} = 6 */
+ * tNmtmSlaveInfo {BYTE; BYTE; BYTE} = 3 (vendored SYS TEC nmtm.h);
+ * tCobParam (cob.h) on ILP32 with CAN 2.0A: m_bSize 3, m_fpCallback 4,
+ * m_CobHdl 12, m_pbData 16, sizeof 24 */
 _Static_assert(sizeof(tHbcProdParam) == 4, "tHbcProdParam");
 _Static_assert(sizeof(tNmtmSlaveParam) == 4, "tNmtmSlaveParam");
-_Static_assert(offsetof(tNmtmSlaveInfo, m_wLifeguardTime) == 2 && sizeof(tNmtmSlaveInfo) == 6, "tNmtmSlaveInfo");
+_Static_assert(offsetof(tNmtmSlaveInfo, m_bLostMsgCount) == 1 && offsetof(tNmtmSlaveInfo, m_bSlaveNodeState) == 2 && sizeof(tNmtmSlaveInfo) == 3, "tNmtmSlaveInfo");
+_Static_assert(offsetof(tCobParam, m_bCobType) == sizeof(tCanId) && offsetof(tCobParam, m_bSize) == sizeof(tCanId) + 1, "tCobParam.m_bSize");
+_Static_assert(offsetof(tCobParam, m_CobHdl) == offsetof(tCobParam, m_pArg) + sizeof(void*), "tCobParam.m_CobHdl");
+_Static_assert(sizeof(tCobHdl) == ((COB_MORE_THAN_128_ENTRIES != FALSE) ? 2 : 1), "tCobHdl width");
 /* tSdocParam {BYTE 0; tTime 4; WORD 8; DWORD 12; DWORD 16; BYTE 20} = 24 */
 _Static_assert(offsetof(tSdocParam, m_TimeOut) == 4 && offsetof(tSdocParam, m_bServerNodeId) == 20, "tSdocParam");
 _Static_assert(sizeof(tSdocParam) == 24, "tSdocParam size");

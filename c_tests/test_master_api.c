@@ -180,7 +180,8 @@ static void StartUp (void)
     /* the slave table */
     CHECK_RET(CcmDefineSlaveTab(NULL, 1), kCopInvalidParam);
     CHECK_RET(CcmDefineSlaveTab(abTwice, 2), kCopNmtmSlaveNodeExist);
-    CHECK_RET(CcmDefineSlaveTab(abZero, 1), kCopNmtmInvalidSlaveNodeId);
+    CHECK_RET(CcmDefineSlaveTab(abZero, 1), kCopSuccessful);                 /* 0 = unused entry */
+    CHECK_RET(CcmNmtmGetSlaveInfo(ID_S, &Info), kCopNmtmSlaveEntryNotExist);
     CHECK_RET(CcmDefineSlaveTab(ab128, 1), kCopNmtmInvalidSlaveNodeId);
     CHECK_RET(CcmDefineSlaveTab(abFive, 5), kCopNmtmNoFreeSlaveEntry);      /* NMTM_MAX_SLAVE_ENTRIES 4 */
     CHECK_RET(CcmDefineSlaveTab(abSlaves, 1), kCopSuccessful);
@@ -191,7 +192,8 @@ static void StartUp (void)
     Run(1, 1);
     CHECK(SawNmtm(ID_S, kNmtErrCtrlEvBootupReceived));
     CHECK_RET(CcmNmtmGetSlaveInfo(ID_S, &Info), kCopSuccessful);
-    CHECK_EQ(Info.m_bNodeState, 0);                     /* boot-up */
+    CHECK_EQ(Info.m_bSlaveNodeState, 0);                /* boot-up */
+    CHECK(Info.m_bSlaveState & kNmtmBootupReceived);
     TestDrainSent();
 
     /* NMT commands */
@@ -236,8 +238,13 @@ static void Guarding (void)
     TestExpectFrame("guard answer", 0x700 + ID_S, 1, abAnswer);
     memset(&Info, 0xEE, sizeof(Info));
     CHECK_RET(CcmNmtmGetSlaveInfo(ID_S, &Info), kCopSuccessful);
-    CHECK_EQ(Info.m_bNodeState, kNodeStateOperational);
-    CHECK_EQ(Info.m_bMissedAnswers, 0);
+    CHECK_EQ(Info.m_bSlaveNodeState, kNodeStateOperational);
+    CHECK_EQ(Info.m_bLostMsgCount, 0);
+    /* nmtm.h bits: used, answer received, fresh; toggle 0 */
+    CHECK_EQ(Info.m_bSlaveState & (kNmtmStateUsed | kNmtmLgReceived | kNmtmUpdate | kNmtmStateToggleBit),
+             kNmtmStateUsed | kNmtmLgReceived | kNmtmUpdate);
+    CHECK_RET(CcmNmtmGetSlaveInfo(ID_S, &Info), kCopSuccessful);
+    CHECK_EQ(Info.m_bSlaveState & kNmtmUpdate, 0);      /* the read cleared it */
     CHECK_RET(CcmNmtmGetSlaveInfo(ID_S, NULL), kCopInvalidParam);
     CHECK_RET(CcmNmtmGetSlaveInfo(9, &Info), kCopNmtmSlaveEntryNotExist);
     CHECK_RET(CcmNmtmGetSlaveInfo(0, &Info), kCopNmtmInvalidSlaveNodeId);
@@ -249,8 +256,9 @@ static void Guarding (void)
     CHECK_RET(CcmConfigLgm(9, &Guard), kCopNmtmSlaveEntryNotExist);
     CHECK_RET(CcmConfigLgm(ID_S, &Guard), kCopSuccessful);
     CHECK_RET(CcmNmtmGetSlaveInfo(ID_S, &Info), kCopSuccessful);
-    CHECK_EQ(Info.m_wLifeguardTime, 10);
-    CHECK_EQ(Info.m_bLifeguardFactor, 2);
+    CHECK_EQ(Info.m_bSlaveState & (kNmtmStateLgActive | kNmtmStateNgActive | kNmtmLgReceived),
+             kNmtmStateLgActive | kNmtmStateNgActive);
+    CHECK_EQ(Info.m_bLostMsgCount, 0);
     Run(50, 1);
     CHECK(!SawNmtm(ID_S, kNmtErrCtrlEvLgNoAnswer));
     CHECK(!SawNmtm(ID_S, kNmtErrCtrlEvLgToggleError));
@@ -258,7 +266,7 @@ static void Guarding (void)
     Run(40, 0);
     CHECK(SawNmtm(ID_S, kNmtErrCtrlEvLgNoAnswer));
     CHECK_RET(CcmNmtmGetSlaveInfo(ID_S, &Info), kCopSuccessful);
-    CHECK(Info.m_bMissedAnswers >= 2);
+    CHECK(Info.m_bLostMsgCount >= 2);
     /* guarding off */
     Guard.m_wLifeguardTime = 0;
     CHECK_RET(CcmConfigLgm(ID_S, &Guard), kCopSuccessful);

@@ -208,7 +208,7 @@ static void EmergencyConsumer (void)
     CHECK_RET(CcmInitEmcc(), kCopSuccessful);
     CHECK_RET(CcmInitEmccEx(EmccCb), kCopSuccessful);
     CHECK_RET(CcmEmccDefineProducerTab(NULL, 1), kCopInvalidParam);
-    CHECK_RET(CcmEmccDefineProducerTab(abZero, 1), kCopEmccNodeIdInvalid);
+    CHECK_RET(CcmEmccDefineProducerTab(abZero, 1), kCopSuccessful);         /* 0 = unused entry */
     CHECK_RET(CcmEmccDefineProducerTab(abOwn, 1), kCopEmccNodeIdInvalid);
     CHECK_RET(CcmEmccDefineProducerTab(abTwice, 2), kCopEmccNodeIdExist);
     CHECK_RET(CcmEmccDefineProducerTab(abTooMany, (BYTE) sizeof(abTooMany)), kCopEmccNoFreeProducerEntry);

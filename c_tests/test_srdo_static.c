@@ -84,7 +84,13 @@ int main (void)
     CHECK_RET(CcmGetSrdoParam(0x1301, &Commu, NULL), kCopSuccessful);
     CHECK_EQ(Commu.m_bDirection, 2);
     CHECK_EQ(Commu.m_wSct, 50);
+    /* refused: neither structure is written (the pattern survives) */
+    memset(&Commu, 0xA5, sizeof(Commu));
+    memset(&Mapp, 0x5A, sizeof(Mapp));
     CHECK_RET(CcmGetSrdoParam(0x1301, &Commu, &Mapp), kCopInvalidParam);
+    CHECK_EQ(Commu.m_bDirection, 0xA5);
+    CHECK_EQ(Commu.m_wSct, 0xA5A5);
+    CHECK_EQ(Mapp.m_bNoOfMappedObjects, 0x5A);
     CHECK_RET(SrdoGetCommuParam(0x1301, &Commu), kCopSuccessful);
 
     (void) aqwWideInverted_g;

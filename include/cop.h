@@ -165,6 +165,21 @@ tCopKernel CcmSendEmergency(const tEmcParam *pEmcpParam_p);
 tCopKernel CcmDefineVarTab(const tVarParam *pVarTab_p, WORD wNumOfVars_p);
 
 /**
+ * `CcmCobGetParam`: identifier, type and frame length of the communication
+ * object that `pCobParam_p->m_CobHdl` selects (see the module
+ * documentation for the handles). Writes `m_CobId`, `m_bCobType`
+ * (`kCobTypRecv` / `kCobTypSend`), `m_bSize`, and NULL into
+ * `m_fpCallback`, `m_pArg`, `m_pbData`, `m_pbRecvdSize`; `m_CobHdl` is
+ * kept. Codes: kCopInvalidParam (NULL), kCopCobIllegalHdl (no PDO there,
+ * or the PDO is not valid: nothing is written), kCopIllegalInstance.
+ *
+ * # Safety
+ * `pCobParam_p` must be NULL or valid for reading and writing a
+ * `tCobParam`.
+ */
+tCopKernel CcmCobGetParam(tCobParam *pCobParam_p);
+
+/**
  * `DynBuildOd`: adds the objects of a binary DCF container to the
  * dictionary, writes its values into existing objects and reconfigures
  * the PDOs it names (seed manual L-1087d chapters 2, 3 and 5.1; the rules
@@ -247,7 +262,7 @@ tCopKernel CcmInitEmccEx(tAppEmccEventCallback pfnCallback_p);
 /**
  * `CcmEmccDefineProducerTab`: the producers (node-IDs) whose emergencies
  * are received on COB-ID 0x80 + node-ID; replaces the previous table (a
- * refused table keeps it). kCopInvalidParam (NULL with a count),
+ * refused table keeps it). Entries 0 are unused and skipped. kCopInvalidParam (NULL with a count),
  * kCopEmccNoFreeProducerEntry (more than `EMCC_MAX_CONSUMER`),
  * kCopEmccNodeIdInvalid (not 1..127, or this node), kCopEmccNodeIdExist
  * (a node twice), or the driver's code from `CdrvDefineCanId`.
@@ -269,8 +284,8 @@ tCopKernel CcmInitNmtm(void);
 tCopKernel CcmInitNmtmEx(tAppNmtmEventCallback pfnCallback_p);
 
 /**
- * `CcmDefineSlaveTab`: the slaves the master manages.
- * kCopInvalidParam (NULL with n > 0), kCopNmtmNoFreeSlaveEntry,
+ * `CcmDefineSlaveTab`: the slaves the master manages; entries 0 are
+ * unused and skipped. kCopInvalidParam (NULL with n > 0), kCopNmtmNoFreeSlaveEntry,
  * kCopNmtmInvalidSlaveNodeId, kCopNmtmSlaveNodeExist.
  *
  * # Safety
@@ -306,7 +321,11 @@ tCopKernel CcmTriggerNodeGuard(BYTE bNodeId_p);
 tCopKernel CcmConfigLgm(BYTE bNodeId_p, const tNmtmSlaveParam *pSlaveParam_p);
 
 /**
- * `CcmNmtmGetSlaveInfo`: what the master knows about a slave.
+ * `CcmNmtmGetSlaveInfo`: what the master knows about a slave: the
+ * `kNmtm*` state bits, the guarding answers missed in a row and the NMT
+ * state the slave last reported. Reading clears `kNmtmUpdate`. Codes:
+ * kCopInvalidParam (NULL), kCopNmtmInvalidSlaveNodeId,
+ * kCopNmtmSlaveEntryNotExist (not in the slave table).
  *
  * # Safety
  * `pSlaveInfo_p` must be NULL or valid for writing a `tNmtmSlaveInfo`.
@@ -699,16 +718,17 @@ tCopKernel SrdoSetState(BYTE bSrdoState_p, WORD wSrdoCommuIndex_p);
  * `CcmGetSrdoParam`: direction and SCT (`tSrdoCommuParam`) and, with
  * dynamic mapping, the number of mapped objects and pointers to the mapped
  * variables (`tSrdoMappParam`; NULL entries for dummy mappings). NULL
- * structure pointers are skipped. With static mapping `tSrdoMappParam`
- * does not exist: a non-NULL third argument gives kCopInvalidParam.
- * kCopSrdoNotExist, kCopSrdoErrorMapp.
+ * structure pointers are skipped. With static mapping the mapping
+ * parameters do not exist: a non-NULL third argument gives
+ * kCopInvalidParam. kCopSrdoNotExist, kCopSrdoErrorMapp. A refused call
+ * writes neither structure.
  *
  * # Safety
  * Non-NULL pointers must be valid for writing their structure.
  */
 tCopKernel CcmGetSrdoParam(WORD wSrdoCommuIndex_p,
                            tSrdoCommuParam *pSrdoCommuParam_p,
-                           void *pSrdoMappParam_p);
+                           tSrdoMappParam *pSrdoMappParam_p);
 
 /**
  * `SrdoGetCommuParam`: direction and SCT of an SRDO. kCopInvalidParam

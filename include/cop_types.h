@@ -169,6 +169,80 @@
 #define ASSERTMSG(expr, msg) ((void) 0)
 #endif
 
+/* Console output of the SYS TEC target headers (target_cop.h): PRINTF0 ..
+ * PRINTF4 take a printf format and 0..4 values. They print through
+ * COP_PRINTF, which is printf unless the platform names another function
+ * (for example a console driver) before this header; defining PRINTF0 ..
+ * PRINTF4 first (as the original allows) replaces them all, for example
+ * with empty macros. No bare PRINTF is defined. */
+#ifndef PRINTF0
+#ifndef COP_PRINTF
+#if defined(__has_include)
+#if __has_include(<stdio.h>)
+#include <stdio.h>
+#endif
+#else
+#include <stdio.h>
+#endif
+#define COP_PRINTF printf
+#endif
+#define PRINTF0(arg)                 COP_PRINTF(arg)
+#define PRINTF1(arg, p1)             COP_PRINTF(arg, p1)
+#define PRINTF2(arg, p1, p2)         COP_PRINTF(arg, p1, p2)
+#define PRINTF3(arg, p1, p2, p3)     COP_PRINTF(arg, p1, p2, p3)
+#define PRINTF4(arg, p1, p2, p3, p4) COP_PRINTF(arg, p1, p2, p3, p4)
+#endif
+
+/* Target memory macros (target_cop.h). They expand to the C library's
+ * memcpy / memset / malloc / free, as the original does on 32-bit ARM and
+ * Linux targets; a platform may define any of them first (for example as
+ * TgtMemCpy / TgtMemSet, declared in cop_app.h). The library itself uses
+ * none of them and needs no heap. Unlike the original these expansions are
+ * expressions without a trailing ';', so they also work inside if/else.
+ * The C library headers are included when the compiler has them (a
+ * toolchain without a C library still compiles everything but these
+ * macros). */
+#ifndef COP_MEMCPY
+#if defined(__has_include)
+#if __has_include(<string.h>)
+#include <string.h>
+#endif
+#else
+#include <string.h>
+#endif
+#define COP_MEMCPY(dst, src, siz) memcpy((void*) (dst), (const void*) (src), (size_t) (siz))
+#endif
+#ifndef COP_MEMSET
+#if defined(__has_include)
+#if __has_include(<string.h>)
+#include <string.h>
+#endif
+#else
+#include <string.h>
+#endif
+#define COP_MEMSET(dst, val, siz) memset((void*) (dst), (int) (val), (size_t) (siz))
+#endif
+#ifndef COP_MALLOC
+#if defined(__has_include)
+#if __has_include(<stdlib.h>)
+#include <stdlib.h>
+#endif
+#else
+#include <stdlib.h>
+#endif
+#define COP_MALLOC(dwMemSize_p) malloc((size_t) (dwMemSize_p))
+#endif
+#ifndef COP_FREE
+#if defined(__has_include)
+#if __has_include(<stdlib.h>)
+#include <stdlib.h>
+#endif
+#else
+#include <stdlib.h>
+#endif
+#define COP_FREE(pMem_p) free((void*) (pMem_p))
+#endif
+
 /* Compile-time assertion usable by C89 compilers (file scope). */
 #define COP_PASTE2_(a, b) a##b
 #define COP_PASTE2(a, b)  COP_PASTE2_(a, b)
@@ -311,6 +385,7 @@ typedef enum
 
     kCopCobNoFreeEntry              = 0x0020,
     kCopCobAlreadyExist             = 0x0021,
+    kCopCobAllreadyExist            = 0x0021,  /* spelling of the CcmDyn manual, 5.1 */
     kCopCobIllegalHdl               = 0x0022,
     kCopCobIllegalCanId             = 0x0023,
     kCopCobInvalidCanId             = 0x0024,
@@ -1019,14 +1094,24 @@ typedef struct
     BYTE m_bLifeguardFactor;
 } tNmtmSlaveParam;
 
-/* CcmNmtmGetSlaveInfo (this library's definition; the SYS TEC headers do not
- * publish the layout). */
+/* NMT master view of one slave (nmtm.h): tNmtmSlaveState bits in
+ * m_bSlaveState. 0x20 is unused. */
+typedef BYTE tNmtmSlaveState;
+#define kNmtmStateReset     0x00    /* entry unused */
+#define kNmtmStateUsed      0x01    /* entry used (slave in the slave table) */
+#define kNmtmBootupReceived 0x02    /* boot-up message received */
+#define kNmtmStateLgActive  0x04    /* life guarding active */
+#define kNmtmLgReceived     0x08    /* a guarding answer has been received */
+#define kNmtmStateNgActive  0x10    /* node guarding active */
+#define kNmtmUpdate         0x40    /* a new guarding answer since the last read */
+#define kNmtmStateToggleBit 0x80    /* toggle bit of the last guarding answer */
+
+/* CcmNmtmGetSlaveInfo: three bytes, layout of nmtm.h. */
 typedef struct
 {
-    BYTE m_bNodeState;          /* kNodeState*, 0 = boot-up or unknown */
-    BYTE m_bMissedAnswers;      /* unanswered guard requests in a row */
-    WORD m_wLifeguardTime;      /* ms */
-    BYTE m_bLifeguardFactor;
+    BYTE m_bSlaveState;         /* tNmtmSlaveState bits */
+    BYTE m_bLostMsgCount;       /* guarding answers missed in a row */
+    BYTE m_bSlaveNodeState;     /* NMT state the slave reported (kNodeState*) */
 } tNmtmSlaveInfo;
 
 /* ======================================================================== */
@@ -1262,6 +1347,86 @@ typedef struct
     DWORD     m_dwDynPIOffsetOut;
     DWORD     m_dwDynPISizeOut;
 } tProcessImageDscrpt;
+
+/* ======================================================================== */
+/* 10. COB layer (cob.h)                                                     */
+/* ======================================================================== */
+
+/* Reason for a COB callback. */
+typedef tFastByte tCobEvent;
+#define kCobEvtReceived 0   /* object received */
+#define kCobEvtSent     1   /* object sent in answer to a remote frame */
+
+/* COB handle: table bit (Rx / Tx) OR index. Its width follows
+ * COB_MORE_THAN_128_ENTRIES as in the original; the library is built from
+ * the same copcfg.h, so both sides agree. */
+#if (COB_MORE_THAN_128_ENTRIES != FALSE)
+typedef WORD tCobHdl;
+#define kCobHdlRxTable   0x0000
+#define kCobHdlTxTable   0x8000
+#define kCobHdlIndexMask 0x7FFF
+#define kCobHdlTableMask 0x8000
+#define kCobHdlInvalid   0xFFFF
+#else
+typedef BYTE tCobHdl;
+#define kCobHdlRxTable   0x00
+#define kCobHdlTxTable   0x80
+#define kCobHdlIndexMask 0x7F
+#define kCobHdlTableMask 0x80
+#define kCobHdlInvalid   0xFF
+#endif
+
+#if (COB_MORE_THAN_256_ENTRIES != FALSE)
+#if (COB_MORE_THAN_128_ENTRIES == FALSE)
+#error "COB_MORE_THAN_256_ENTRIES needs COB_MORE_THAN_128_ENTRIES"
+#endif
+typedef WORD tCobIdx;
+#define COB_INVALID_INDEX 0xFFFF
+#else
+typedef BYTE tCobIdx;
+#define COB_INVALID_INDEX 0xFF
+#endif
+
+#if (COB_MORE_THAN_128_ENTRIES != FALSE)
+typedef WORD tCobEntryIndex;
+#else
+typedef BYTE tCobEntryIndex;
+#endif
+
+/* COB types (tMsgTyp values with the kMtb* flag bits). */
+typedef BYTE tCobType;
+#define kCobTypSend         (kMsgTypSend)
+#define kCobTypRecv         (kMsgTypRecv)
+#define kCobTypRmtSend      (kMsgTypSendRtrReq)
+#define kCobTypRmtRecv      (kMsgTypRecvRtrReq)
+#define kCobTypForceSend    (kMsgTypSend | kMtbForce)
+#define kCobTypForceRmtSend (kMsgTypSendRtrReq | kMtbForce)
+#define kCobTypForceRmtRecv (kMsgTypRecvRtrReq | kMtbForce)
+#define kCobTypFilter       (kMtbFilter | kMtbForce)
+#define kCobTypRtrInvalid   (0x10)
+#define kCobReserved1       (kMtbForce)
+#define kCobReserved2       (kMtbFirstMsg)
+#define kCobReserved3       (kMtbHighPrio)
+#define kCobReserved4       (kMtbExtend)
+
+typedef tCopKernel (PUBLIC ROM* tCobCallback) (CCM_DECL_INSTANCE_HDL_ void MEM* pArg_p, tCobEvent Event_p);
+
+/* Parameters of one communication object. Fields m_CobId .. m_pArg are
+ * inputs, m_CobHdl selects the entry for CcmCobGetParam, which fills
+ * m_CobId, m_bCobType, m_bSize, m_fpCallback (NULL), m_pArg (NULL),
+ * m_pbData and m_pbRecvdSize (NULL: the library keeps no frame buffer per
+ * object). */
+typedef struct
+{
+    tCanId       m_CobId;
+    BYTE         m_bCobType;
+    BYTE         m_bSize;
+    tCobCallback m_fpCallback;
+    void MEM*    m_pArg;
+    tCobHdl      m_CobHdl;
+    BYTE MEM*    m_pbData;
+    BYTE MEM*    m_pbRecvdSize;
+} tCobParam;
 
 /* ======================================================================== */
 /* Private contract between objdef.h (ObdInitRam) and CcmInitCANopen         */

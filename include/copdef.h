@@ -89,6 +89,24 @@
 #define SDO_CRC_POLYNOM 2
 #endif
 
+/* COB layer switches (cob.h): the width of tCobHdl / tCobIdx and the
+ * search algorithm. The library keeps no COB tables of its own; the
+ * handle width matters for tCobParam (CcmCobGetParam). */
+#ifndef COB_MORE_THAN_128_ENTRIES
+#define COB_MORE_THAN_128_ENTRIES FALSE
+#endif
+#ifndef COB_MORE_THAN_256_ENTRIES
+#define COB_MORE_THAN_256_ENTRIES FALSE
+#endif
+#ifndef COB_SEARCHALGO_LIST
+#define COB_SEARCHALGO_LIST 0
+#endif
+#ifndef COB_SEARCHALGO_INDEXARRAY
+#define COB_SEARCHALGO_INDEXARRAY 1
+#endif
+#ifndef COB_SEARCHALGO
+#define COB_SEARCHALGO COB_SEARCHALGO_LIST
+#endif
 /* High precision time (CDRV_USE_HPT) */
 #ifndef CDRV_HPT_OFF
 #define CDRV_HPT_OFF      0

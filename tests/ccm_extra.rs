@@ -253,8 +253,10 @@ fn emergency_consumer_table_codes() {
         stack.define_emcc_producers(port, &too_many),
         Err(CopKernel::EmccNoFreeProducerEntry)
     );
+    // 0 marks an unused entry: skipped, not refused.
+    assert_eq!(stack.define_emcc_producers(port, &[0]), Ok(()));
     assert_eq!(
-        stack.define_emcc_producers(port, &[0]),
+        stack.define_emcc_producers(port, &[128]),
         Err(CopKernel::EmccNodeIdInvalid)
     );
     assert_eq!(

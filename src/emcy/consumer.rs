@@ -75,7 +75,8 @@ impl EmcyConsumer {
     }
 
     /// `CcmEmccDefineProducerTab`: the producers to listen to, replacing
-    /// the previous list; `own` is this node's ID. Codes, checked in this
+    /// the previous list; `own` is this node's ID; node-ID 0 marks an
+    /// unused entry and is skipped. Codes, checked in this
     /// order: kCopEmccNoFreeProducerEntry (more entries than
     /// `EMCC_MAX_CONSUMER`), kCopEmccNodeIdInvalid (not 1..=127, or this
     /// node), kCopEmccNodeIdExist (a node listed twice). New identifiers
@@ -87,21 +88,25 @@ impl EmcyConsumer {
         own: u8,
         port: &mut impl CanPort,
     ) -> CopResult {
-        if nodes.len() > CAPACITY {
+        // Node-ID 0 marks an unused entry of the application's table
+        // (tables sized for every possible slave, filled as slaves are
+        // added): skipped, not refused.
+        let used = || nodes.iter().filter(|n| **n != 0);
+        if used().count() > CAPACITY {
             return Err(CopKernel::EmccNoFreeProducerEntry);
         }
-        for (i, n) in nodes.iter().enumerate() {
+        for (i, n) in used().enumerate() {
             if !(1..=127).contains(n) || *n == own {
                 return Err(CopKernel::EmccNodeIdInvalid);
             }
-            if nodes.iter().take(i).any(|m| m == n) {
+            if used().take(i).any(|m| m == n) {
                 return Err(CopKernel::EmccNodeIdExist);
             }
         }
         let previous = self.producers;
         self.producers = [0; CAPACITY];
         let mut result = Ok(());
-        for (slot, n) in self.producers.iter_mut().zip(nodes) {
+        for (slot, n) in self.producers.iter_mut().zip(used()) {
             *slot = *n;
             if !previous.contains(n) {
                 if let Err(e) = port.subscribe(producer_id(*n), Priority::Low) {
@@ -167,10 +172,6 @@ mod tests {
             Err(CopKernel::EmccNoFreeProducerEntry)
         );
         assert_eq!(
-            c.define_producers(&[0], 1, &mut f),
-            Err(CopKernel::EmccNodeIdInvalid)
-        );
-        assert_eq!(
             c.define_producers(&[128], 1, &mut f),
             Err(CopKernel::EmccNodeIdInvalid)
         );
@@ -183,8 +184,13 @@ mod tests {
             Err(CopKernel::EmccNodeIdExist)
         );
         assert_eq!(c.producers().collect::<Vec<_>>(), vec![5]);
-        // Replacing subscribes only the new identifiers.
-        assert!(c.define_producers(&[5, 6], 1, &mut f).is_ok());
+        // Replacing subscribes only the new identifiers; 0 = unused entry
+        // (a table longer than the capacity with few entries used fits).
+        let mut sparse = [0u8; CAPACITY + 3];
+        sparse[1] = 5;
+        sparse[CAPACITY + 2] = 6;
+        assert!(c.define_producers(&sparse, 1, &mut f).is_ok());
+        assert_eq!(c.producers().collect::<Vec<_>>(), vec![5, 6]);
         assert_eq!(f.0, vec![producer_id(5), producer_id(6)]);
     }
 

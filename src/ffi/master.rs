@@ -42,7 +42,7 @@ pub extern "C" fn CcmInitEmccEx(pfnCallback_p: tAppEmccEventCallback) -> tCopKer
 
 /// `CcmEmccDefineProducerTab`: the producers (node-IDs) whose emergencies
 /// are received on COB-ID 0x80 + node-ID; replaces the previous table (a
-/// refused table keeps it). kCopInvalidParam (NULL with a count),
+/// refused table keeps it). Entries 0 are unused and skipped. kCopInvalidParam (NULL with a count),
 /// kCopEmccNoFreeProducerEntry (more than `EMCC_MAX_CONSUMER`),
 /// kCopEmccNodeIdInvalid (not 1..127, or this node), kCopEmccNodeIdExist
 /// (a node twice), or the driver's code from `CdrvDefineCanId`.
@@ -83,8 +83,8 @@ pub extern "C" fn CcmInitNmtmEx(pfnCallback_p: tAppNmtmEventCallback) -> tCopKer
     }))
 }
 
-/// `CcmDefineSlaveTab`: the slaves the master manages.
-/// kCopInvalidParam (NULL with n > 0), kCopNmtmNoFreeSlaveEntry,
+/// `CcmDefineSlaveTab`: the slaves the master manages; entries 0 are
+/// unused and skipped. kCopInvalidParam (NULL with n > 0), kCopNmtmNoFreeSlaveEntry,
 /// kCopNmtmInvalidSlaveNodeId, kCopNmtmSlaveNodeExist.
 ///
 /// # Safety
@@ -157,7 +157,11 @@ pub unsafe extern "C" fn CcmConfigLgm(
     }))
 }
 
-/// `CcmNmtmGetSlaveInfo`: what the master knows about a slave.
+/// `CcmNmtmGetSlaveInfo`: what the master knows about a slave: the
+/// `kNmtm*` state bits, the guarding answers missed in a row and the NMT
+/// state the slave last reported. Reading clears `kNmtmUpdate`. Codes:
+/// kCopInvalidParam (NULL), kCopNmtmInvalidSlaveNodeId,
+/// kCopNmtmSlaveEntryNotExist (not in the slave table).
 ///
 /// # Safety
 /// `pSlaveInfo_p` must be NULL or valid for writing a `tNmtmSlaveInfo`.
@@ -168,14 +172,13 @@ pub unsafe extern "C" fn CcmNmtmGetSlaveInfo(
 ) -> tCopKernel {
     // SAFETY: the caller's contract (NULL or a writable tNmtmSlaveInfo).
     let out = c_try!(unsafe { ptr::out(pSlaveInfo_p) });
-    let r = global::with(|i| i.stack.nmtm().slave_info(bNodeId_p));
+    let r = global::with(|i| i.stack.nmtm_mut().read_slave_info(bNodeId_p));
     match r {
         Ok(Ok(info)) => {
             out.set(tNmtmSlaveInfo {
-                m_bNodeState: info.state,
-                m_bMissedAnswers: info.misses,
-                m_wLifeguardTime: info.guard_ms,
-                m_bLifeguardFactor: info.life_factor,
+                m_bSlaveState: info.flags,
+                m_bLostMsgCount: info.misses,
+                m_bSlaveNodeState: info.state,
             });
             0
         }

@@ -10,8 +10,10 @@
 
 #![allow(non_snake_case, non_camel_case_types, non_upper_case_globals)]
 
+pub mod ami;
 pub mod callbacks;
 pub mod ccm;
+pub mod cob;
 pub mod driver;
 pub mod dynod;
 pub mod global;

@@ -196,31 +196,39 @@ fn get_commu(idx: WORD, p: Out<tSrdoCommuParam>) -> tCopKernel {
     }
 }
 
+/// The mapping parameters of `idx` as the C structure.
+#[cfg(not(srdo_static_mapping))]
+fn mapp_struct(idx: WORD) -> Result<tSrdoMappParam, CopKernel> {
+    let m = global::with(|i| i.stack.srdo().mapp_param(i.stack.od(), idx))??;
+    let mut out = tSrdoMappParam {
+        m_bNoOfMappedObjects: m.count,
+        m_apMappedVariable: [core::ptr::null_mut(); crate::config::SRDO_MAX_MAPPENTRIES],
+    };
+    for (o, v) in out.m_apMappedVariable.iter_mut().zip(m.vars.iter()) {
+        *o = v.map_or(core::ptr::null_mut(), |s| s.as_ptr() as *mut c_void);
+    }
+    Ok(out)
+}
+
 /// Writes the mapping parameters of `idx` to `p`.
 #[cfg(not(srdo_static_mapping))]
 fn get_mapp(idx: WORD, p: Out<tSrdoMappParam>) -> tCopKernel {
-    match global::with(|i| i.stack.srdo().mapp_param(i.stack.od(), idx)) {
-        Ok(Ok(m)) => {
-            let mut out = tSrdoMappParam {
-                m_bNoOfMappedObjects: m.count,
-                m_apMappedVariable: [core::ptr::null_mut(); crate::config::SRDO_MAX_MAPPENTRIES],
-            };
-            for (o, v) in out.m_apMappedVariable.iter_mut().zip(m.vars.iter()) {
-                *o = v.map_or(core::ptr::null_mut(), |s| s.as_ptr() as *mut c_void);
-            }
-            p.set(out);
+    match mapp_struct(idx) {
+        Ok(m) => {
+            p.set(m);
             0
         }
-        Ok(Err(e)) | Err(e) => e.code(),
+        Err(e) => e.code(),
     }
 }
 
 /// `CcmGetSrdoParam`: direction and SCT (`tSrdoCommuParam`) and, with
 /// dynamic mapping, the number of mapped objects and pointers to the mapped
 /// variables (`tSrdoMappParam`; NULL entries for dummy mappings). NULL
-/// structure pointers are skipped. With static mapping `tSrdoMappParam`
-/// does not exist: a non-NULL third argument gives kCopInvalidParam.
-/// kCopSrdoNotExist, kCopSrdoErrorMapp.
+/// structure pointers are skipped. With static mapping the mapping
+/// parameters do not exist: a non-NULL third argument gives
+/// kCopInvalidParam. kCopSrdoNotExist, kCopSrdoErrorMapp. A refused call
+/// writes neither structure.
 ///
 /// # Safety
 /// Non-NULL pointers must be valid for writing their structure.
@@ -228,35 +236,48 @@ fn get_mapp(idx: WORD, p: Out<tSrdoMappParam>) -> tCopKernel {
 pub unsafe extern "C" fn CcmGetSrdoParam(
     wSrdoCommuIndex_p: WORD,
     pSrdoCommuParam_p: *mut tSrdoCommuParam,
-    pSrdoMappParam_p: *mut c_void,
+    pSrdoMappParam_p: *mut tSrdoMappParam,
 ) -> tCopKernel {
     let exists = global::with(|i| i.stack.srdo().get_state(wSrdoCommuIndex_p).map(|_| ()));
     if let Err(e) = exists.and_then(|r| r) {
         return e.code();
     }
-    // SAFETY: the caller's contract (NULL, skipped, or writable).
-    if let Ok(commu) = unsafe { ptr::out(pSrdoCommuParam_p) } {
-        let r = get_commu(wSrdoCommuIndex_p, commu);
-        if r != 0 {
-            return r;
+    #[cfg(srdo_static_mapping)]
+    if !pSrdoMappParam_p.is_null() {
+        return CopKernel::InvalidParam.code();
+    }
+    // Both results first, then the writes: a refusal leaves the caller's
+    // structures as they were.
+    let commu = if pSrdoCommuParam_p.is_null() {
+        None
+    } else {
+        match global::with(|i| i.stack.srdo().commu_param(i.stack.od(), wSrdoCommuIndex_p)) {
+            Ok(Ok(c)) => Some(tSrdoCommuParam {
+                m_bDirection: c.direction,
+                m_wSct: c.sct_ms,
+            }),
+            Ok(Err(e)) | Err(e) => return e.code(),
         }
+    };
+    #[cfg(not(srdo_static_mapping))]
+    let mapp = if pSrdoMappParam_p.is_null() {
+        None
+    } else {
+        match mapp_struct(wSrdoCommuIndex_p) {
+            Ok(m) => Some(m),
+            Err(e) => return e.code(),
+        }
+    };
+    // SAFETY: the caller's contract (NULL, skipped, or writable).
+    if let (Ok(out), Some(c)) = (unsafe { ptr::out(pSrdoCommuParam_p) }, commu) {
+        out.set(c);
     }
     #[cfg(not(srdo_static_mapping))]
-    {
-        // SAFETY: as above; a tSrdoMappParam with dynamic mapping.
-        match unsafe { ptr::out(pSrdoMappParam_p as *mut tSrdoMappParam) } {
-            Ok(mapp) => get_mapp(wSrdoCommuIndex_p, mapp),
-            Err(_) => 0,
-        }
+    // SAFETY: as above.
+    if let (Ok(out), Some(m)) = (unsafe { ptr::out(pSrdoMappParam_p) }, mapp) {
+        out.set(m);
     }
-    #[cfg(srdo_static_mapping)]
-    {
-        if pSrdoMappParam_p.is_null() {
-            0
-        } else {
-            CopKernel::InvalidParam.code()
-        }
-    }
+    0
 }
 
 /// `SrdoGetCommuParam`: direction and SCT of an SRDO. kCopInvalidParam

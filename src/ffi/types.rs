@@ -11,6 +11,8 @@ use core::ffi::c_void;
 
 /// `BYTE`.
 pub type BYTE = u8;
+/// `QWORD` (64 bits).
+pub type QWORD = u64;
 /// `WORD`.
 pub type WORD = u16;
 /// `DWORD` (32 bits everywhere).
@@ -40,6 +42,42 @@ pub type tCanId = WORD;
 /// `tCanId`: WORD for CAN 2.0A, DWORD for CAN 2.0B (`CDRV_CAN_SPEC`).
 #[cfg(cdrv_can20b)]
 pub type tCanId = DWORD;
+
+/// `tCobHdl`: WORD with `COB_MORE_THAN_128_ENTRIES`, else BYTE (cob.h).
+#[cfg(cob_hdl_word)]
+pub type tCobHdl = WORD;
+/// `tCobHdl`: WORD with `COB_MORE_THAN_128_ENTRIES`, else BYTE (cob.h).
+#[cfg(not(cob_hdl_word))]
+pub type tCobHdl = BYTE;
+/// Table bit of a `tCobHdl` (`kCobHdlTxTable`); the index is below it.
+#[cfg(cob_hdl_word)]
+pub const COB_HDL_TX_TABLE: tCobHdl = 0x8000;
+/// Table bit of a `tCobHdl` (`kCobHdlTxTable`); the index is below it.
+#[cfg(not(cob_hdl_word))]
+pub const COB_HDL_TX_TABLE: tCobHdl = 0x80;
+
+/// `tCobParam` (cob.h): one communication object.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct tCobParam {
+    /// CAN identifier.
+    pub m_CobId: tCanId,
+    /// `tCobType`.
+    pub m_bCobType: BYTE,
+    /// Frame length.
+    pub m_bSize: BYTE,
+    /// `tCobCallback` of the entry.
+    pub m_fpCallback:
+        Option<unsafe extern "C" fn(pArg_p: *mut c_void, Event_p: tFastByte) -> tCopKernel>,
+    /// Argument of the callback.
+    pub m_pArg: *mut c_void,
+    /// Handle: selects the entry.
+    pub m_CobHdl: tCobHdl,
+    /// Frame data.
+    pub m_pbData: *mut BYTE,
+    /// Where the received length is kept.
+    pub m_pbRecvdSize: *mut BYTE,
+}
 
 /// Message type bits (`tMsgTypBit`).
 pub mod msg_type {
@@ -194,18 +232,17 @@ pub struct tNmtmSlaveParam {
     pub m_bLifeguardFactor: BYTE,
 }
 
-/// `tNmtmSlaveInfo` (`CcmNmtmGetSlaveInfo`; this library's definition).
+/// `tNmtmSlaveInfo` (`CcmNmtmGetSlaveInfo`; layout of the vendored SYS TEC
+/// `nmtm.h`: three bytes).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct tNmtmSlaveInfo {
-    /// Last NMT state (kNodeState*), 0 = boot-up or unknown.
-    pub m_bNodeState: BYTE,
-    /// Unanswered guard requests in a row.
-    pub m_bMissedAnswers: BYTE,
-    /// Guard time in ms.
-    pub m_wLifeguardTime: WORD,
-    /// Life time factor.
-    pub m_bLifeguardFactor: BYTE,
+    /// `tNmtmSlaveState` bits (`kNmtm*`).
+    pub m_bSlaveState: BYTE,
+    /// Guarding answers missed in a row.
+    pub m_bLostMsgCount: BYTE,
+    /// NMT state the slave reported (kNodeState*), 0 = boot-up or unknown.
+    pub m_bSlaveNodeState: BYTE,
 }
 
 /// `tSdocState`.
@@ -464,7 +501,7 @@ static_assertions::const_assert_eq!(core::mem::size_of::<tHbcProdParam>(), 4);
 static_assertions::const_assert_eq!(core::mem::size_of::<tSdocParam>(), 24);
 static_assertions::const_assert_eq!(core::mem::size_of::<tSdocCbFinishParam>(), 12);
 static_assertions::const_assert_eq!(core::mem::size_of::<tNmtmSlaveParam>(), 4);
-static_assertions::const_assert_eq!(core::mem::size_of::<tNmtmSlaveInfo>(), 6);
+static_assertions::const_assert_eq!(core::mem::size_of::<tNmtmSlaveInfo>(), 3);
 static_assertions::const_assert_eq!(core::mem::size_of::<tEmcParam>(), 10);
 static_assertions::const_assert_eq!(core::mem::size_of::<tTimeOfDay>(), 8);
 static_assertions::const_assert_eq!(

@@ -20,6 +20,10 @@ struct Slave {
     toggle: bool,
     state: Option<u8>,
     no_answer_reported: bool,
+    bootup_seen: bool,
+    answered: bool,
+    updated: bool,
+    last_toggle: bool,
 }
 
 /// What the master knows about a slave (`CcmNmtmGetSlaveInfo`).
@@ -33,6 +37,27 @@ pub struct SlaveInfo {
     pub life_factor: u8,
     /// Unanswered guard requests in a row.
     pub misses: u8,
+    /// `tNmtmSlaveState` bits (`slave_state` constants).
+    pub flags: u8,
+}
+
+/// The `tNmtmSlaveState` bits of [`SlaveInfo::flags`] (values of the
+/// vendored SYS TEC `nmtm.h`).
+pub mod slave_state {
+    /// The slave is in the slave table.
+    pub const USED: u8 = 0x01;
+    /// Its boot-up message was received.
+    pub const BOOTUP_RECEIVED: u8 = 0x02;
+    /// Life guarding is configured (guard time and life time factor).
+    pub const LG_ACTIVE: u8 = 0x04;
+    /// A guarding answer was received since guarding was configured.
+    pub const LG_RECEIVED: u8 = 0x08;
+    /// Node guarding requests are being sent.
+    pub const NG_ACTIVE: u8 = 0x10;
+    /// A guarding answer arrived since the last read.
+    pub const UPDATE: u8 = 0x40;
+    /// Toggle bit of the last guarding answer.
+    pub const TOGGLE_BIT: u8 = 0x80;
 }
 
 /// The NMT master.
@@ -71,6 +96,10 @@ impl NmtMaster {
                 toggle: false,
                 state: None,
                 no_answer_reported: false,
+                bootup_seen: false,
+                answered: false,
+                updated: false,
+                last_toggle: false,
             }; CAPACITY],
         }
     }
@@ -86,21 +115,26 @@ impl NmtMaster {
     }
 
     /// `CcmDefineSlaveTab`: the slaves the master manages (replaces the
-    /// list). Codes: kCopNmtmNoFreeSlaveEntry (more than the capacity),
+    /// list); node-ID 0 marks an unused entry and is skipped. Codes:
+    /// kCopNmtmNoFreeSlaveEntry (more used entries than the capacity),
     /// kCopNmtmInvalidSlaveNodeId, kCopNmtmSlaveNodeExist (duplicate). On
     /// error the previous list is kept.
     pub fn define_slaves(&mut self, nodes: &[u8]) -> CopResult {
-        if nodes.len() > CAPACITY {
+        // Node-ID 0 marks an unused entry of the application's table
+        // (tables sized for every possible slave, filled as slaves are
+        // added): skipped, not refused.
+        let used = || nodes.iter().filter(|n| **n != 0);
+        if used().count() > CAPACITY {
             return Err(CopKernel::NmtmNoFreeSlaveEntry);
         }
-        for (i, n) in nodes.iter().enumerate() {
+        for (i, n) in used().enumerate() {
             valid_node(*n)?;
-            if nodes.iter().take(i).any(|m| m == n) {
+            if used().take(i).any(|m| m == n) {
                 return Err(CopKernel::NmtmSlaveNodeExist);
             }
         }
         self.slaves = Self::new().slaves;
-        for (s, n) in self.slaves.iter_mut().zip(nodes) {
+        for (s, n) in self.slaves.iter_mut().zip(used()) {
             s.node = *n;
         }
         Ok(())
@@ -133,7 +167,17 @@ impl NmtMaster {
         // reset communication (CiA 301 7.2.8.3.2.1), which the master sees
         // as the slave's boot-up message.
         s.no_answer_reported = false;
+        s.answered = false;
+        s.updated = false;
         Ok(())
+    }
+
+    /// What the master knows about a slave; the read clears
+    /// [`slave_state::UPDATE`] (`CcmNmtmGetSlaveInfo`).
+    pub fn read_slave_info(&mut self, node: u8) -> CopResult<SlaveInfo> {
+        let info = self.slave_info(node)?;
+        self.slave_mut(node)?.updated = false;
+        Ok(info)
     }
 
     /// What the master knows about a slave.
@@ -144,11 +188,21 @@ impl NmtMaster {
             .iter()
             .find(|s| s.node == node)
             .ok_or(CopKernel::NmtmSlaveEntryNotExist)?;
+        let guarded = s.guard_ms > 0;
+        let bit = |on: bool, b: u8| if on { b } else { 0 };
+        let flags = slave_state::USED
+            | bit(s.bootup_seen, slave_state::BOOTUP_RECEIVED)
+            | bit(guarded && s.life_factor > 0, slave_state::LG_ACTIVE)
+            | bit(s.answered, slave_state::LG_RECEIVED)
+            | bit(guarded && self.enabled, slave_state::NG_ACTIVE)
+            | bit(s.updated, slave_state::UPDATE)
+            | bit(s.last_toggle, slave_state::TOGGLE_BIT);
         Ok(SlaveInfo {
             state: s.state.unwrap_or(0),
             guard_ms: s.guard_ms,
             life_factor: s.life_factor,
             misses: s.misses,
+            flags,
         })
     }
 
@@ -192,6 +246,9 @@ impl NmtMaster {
             s.misses = 0;
             s.no_answer_reported = false;
             let toggle = raw & 0x80 != 0;
+            s.answered = true;
+            s.updated = true;
+            s.last_toggle = toggle;
             if toggle != s.toggle {
                 q.emit(Event::Nmtm(ec.node, ErrCtrlEvent::LgToggleError));
             }
@@ -206,6 +263,7 @@ impl NmtMaster {
             if let Some(s) = self.slaves.iter_mut().find(|s| s.node == ec.node) {
                 s.state = Some(0);
                 s.toggle = false;
+                s.bootup_seen = true;
             }
             q.emit(Event::Nmtm(ec.node, ErrCtrlEvent::BootupReceived));
         }
@@ -248,15 +306,30 @@ impl NmtMaster {
 mod tests {
     use super::*;
     use crate::event::Action;
-    use crate::port::CanId;
+    use crate::port::{CanId, RxFrame};
+
+    struct Sink(Vec<CanFrame>);
+    impl CanPort for Sink {
+        fn send(&mut self, f: &CanFrame, _: Priority) -> CopResult {
+            self.0.push(*f);
+            Ok(())
+        }
+        fn receive(&mut self) -> Option<RxFrame> {
+            None
+        }
+    }
 
     #[test]
     fn slave_table_checks() {
         let mut m = NmtMaster::new();
         assert_eq!(
-            m.define_slaves(&[0]),
+            m.define_slaves(&[128]),
             Err(CopKernel::NmtmInvalidSlaveNodeId)
         );
+        // 0 = unused entry: skipped (a table of 5 with 2 used fits 4).
+        assert!(m.define_slaves(&[0, 5, 0, 6, 0]).is_ok());
+        assert_eq!(m.slave_info(5).map(|i| i.flags), Ok(0x01));
+        assert_eq!(m.slave_info(0), Err(CopKernel::NmtmInvalidSlaveNodeId));
         assert_eq!(m.define_slaves(&[5, 5]), Err(CopKernel::NmtmSlaveNodeExist));
         assert!(m.define_slaves(&[5, 6]).is_ok());
         assert_eq!(
@@ -265,6 +338,30 @@ mod tests {
         );
         assert!(m.configure_guarding(6, 100, 3, Ticks(0)).is_ok());
         assert_eq!(m.slave_info(6).map(|i| i.guard_ms), Ok(100));
+    }
+
+    #[test]
+    fn slave_state_bits_follow_guarding() {
+        // Bit values: vendored SYS TEC nmtm.h (tNmtmSlaveState).
+        let mut m = NmtMaster::new();
+        m.enable();
+        assert!(m.define_slaves(&[4]).is_ok());
+        assert_eq!(m.slave_info(4).map(|i| i.flags), Ok(0x01));
+        let mut q = ActionQueue::new();
+        m.on_error_control(&nmt::encode_bootup(4), &mut q);
+        assert_eq!(m.slave_info(4).map(|i| i.flags), Ok(0x03));
+        assert!(m.configure_guarding(4, 100, 3, Ticks(0)).is_ok());
+        assert_eq!(m.slave_info(4).map(|i| i.flags), Ok(0x17));
+        // A guard answer (CiA 301 7.2.8.3.2.1): toggle 1, state 0x7F.
+        let mut port = Sink(Vec::new());
+        assert!(m.trigger_guard(&mut port, 4, Ticks(0)).is_ok());
+        assert_eq!(port.0.len(), 1);
+        let answer = CanFrame::new(CanId::std_masked(0x704), &[0xFF]);
+        assert!(m.on_error_control(&answer, &mut q));
+        let info = m.read_slave_info(4);
+        assert_eq!(info.map(|i| (i.flags, i.state)), Ok((0xDF, 0x7F)));
+        // The read cleared the update bit.
+        assert_eq!(m.slave_info(4).map(|i| i.flags), Ok(0x9F));
     }
 
     #[test]

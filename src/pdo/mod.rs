@@ -463,6 +463,20 @@ impl Pdo {
             .and_then(|c| c.cfg.cob)
     }
 
+    /// Identifier and frame length of PDO number `n` (0-based, in the
+    /// order 0x1400+n / 0x1800+n) when it is served and valid
+    /// (`CcmCobGetParam`).
+    pub fn cob_entry(&self, dir: Direction, n: usize) -> Option<(CanId, u8)> {
+        let c = match dir {
+            Direction::Rx => self.rx.get(n),
+            Direction::Tx => self.tx.get(n),
+        }?;
+        if !c.cfg.present {
+            return None;
+        }
+        c.cfg.cob.map(|id| (id, c.len()))
+    }
+
     /// The SYNC COB-ID in use.
     pub fn sync_cob_id(&self) -> Option<CanId> {
         self.sync.cob
