@@ -169,7 +169,7 @@ fn from_features() -> Config {
         emcc_max_consumer: env_u32("COP_EMCC_MAX_CONSUMER", 10),
         // SYS TEC default TRUE; COP_NMTS_USE_LIFEGUARDING=0 switches it off.
         nmts_use_lifeguarding: env_u32("COP_NMTS_USE_LIFEGUARDING", 1) != 0,
-        dyn_od_pool_size: env_u32("COP_OBD_DYNAMIC_POOL_SIZE", 4096),
+        dyn_od_pool_size: env_u32("COP_OBD_DYNAMIC_POOL_SIZE", 8192),
         // The dynamic OD is part of the Rust build unless switched off.
         obd_use_dynamic_od: env_u32("COP_OBD_USE_DYNAMIC_OD", 1) != 0,
     }

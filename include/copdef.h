@@ -218,7 +218,7 @@
 #endif
 /* Bytes of the pool from which the dynamic OD builds its tables. */
 #ifndef OBD_DYNAMIC_POOL_SIZE
-#define OBD_DYNAMIC_POOL_SIZE 4096
+#define OBD_DYNAMIC_POOL_SIZE 8192
 #endif
 #ifndef OBD_USE_STORE_RESTORE
 #define OBD_USE_STORE_RESTORE CCM_USE_STORE_RESTORE

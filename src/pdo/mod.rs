@@ -247,8 +247,10 @@ impl Config {
 }
 
 /// One PDO: configuration, application attachments and run-time state.
+/// `pub(crate)` so that the dynamic OD can lay channels out in its pool
+/// ([`Pdo::attach_pooled`]).
 #[derive(Clone, Debug)]
-struct Channel {
+pub(crate) struct Channel {
     cfg: Config,
     /// `CcmDefineStaticPdoTab`: the payload is this byte block, not a
     /// mapping.
@@ -272,7 +274,8 @@ struct Channel {
 }
 
 impl Channel {
-    const fn new() -> Channel {
+    /// A channel without configuration.
+    pub(crate) const fn new() -> Channel {
         Channel {
             cfg: Config::new(),
             static_data: None,
@@ -377,13 +380,58 @@ pub(crate) struct Parts<'a> {
     pub queue: &'a mut ActionQueue,
 }
 
+/// Bytes of the state of one PDO: what a dynamic OD's pool holds per PDO
+/// channel it provides (`PDO_MAX_RXPDO_IN_OBD` / `PDO_MAX_TXPDO_IN_OBD` 0).
+pub const fn channel_size() -> usize {
+    core::mem::size_of::<Channel>()
+}
+
+/// The channels of one direction: the `N` of the build configuration, or
+/// those a dynamic OD laid out in its pool for the PDOs its container
+/// creates beyond them (then these replace the fixed ones).
+#[derive(Debug)]
+struct Channels<const N: usize> {
+    fixed: [Channel; N],
+    pooled: Option<&'static mut [Channel]>,
+}
+
+impl<const N: usize> Channels<N> {
+    const fn new() -> Self {
+        Channels {
+            fixed: [const { Channel::new() }; N],
+            pooled: None,
+        }
+    }
+}
+
+impl<const N: usize> core::ops::Deref for Channels<N> {
+    type Target = [Channel];
+    fn deref(&self) -> &[Channel] {
+        match &self.pooled {
+            Some(p) => p,
+            None => &self.fixed,
+        }
+    }
+}
+
+impl<const N: usize> core::ops::DerefMut for Channels<N> {
+    fn deref_mut(&mut self) -> &mut [Channel] {
+        match &mut self.pooled {
+            Some(p) => p,
+            None => &mut self.fixed,
+        }
+    }
+}
+
 /// The PDO module: `PDO_MAX_RXPDO_IN_OBD` RPDOs (0x1400+n) and
 /// `PDO_MAX_TXPDO_IN_OBD` TPDOs (0x1800+n), and the SYNC consumer.
-/// PDOs of the dictionary beyond these capacities are not served.
-#[derive(Clone, Debug)]
+/// PDOs of the dictionary beyond these capacities are not served, except
+/// those of a dynamic OD whose channels lie in its pool
+/// ([`Pdo::attach_pooled`]).
+#[derive(Debug)]
 pub struct Pdo {
-    rx: [Channel; PDO_MAX_RXPDO_IN_OBD],
-    tx: [Channel; PDO_MAX_TXPDO_IN_OBD],
+    rx: Channels<PDO_MAX_RXPDO_IN_OBD>,
+    tx: Channels<PDO_MAX_TXPDO_IN_OBD>,
     sync: SyncConsumer,
     operational: bool,
     lock_depth: u8,
@@ -410,8 +458,8 @@ impl Pdo {
     /// A module without configuration.
     pub const fn new() -> Pdo {
         Pdo {
-            rx: [const { Channel::new() }; PDO_MAX_RXPDO_IN_OBD],
-            tx: [const { Channel::new() }; PDO_MAX_TXPDO_IN_OBD],
+            rx: Channels::new(),
+            tx: Channels::new(),
             sync: SyncConsumer::new(),
             operational: false,
             lock_depth: 0,
@@ -421,6 +469,50 @@ impl Pdo {
             housekeeping_done: false,
             quiet: false,
         }
+    }
+
+    /// Channels laid out elsewhere (a dynamic OD's pool) replace the fixed
+    /// ones of a direction; `None` keeps that direction's. The state of
+    /// the fixed channels is copied into the first ones. The caller
+    /// reconfigures the module afterwards.
+    pub(crate) fn attach_pooled(
+        &mut self,
+        rx: Option<&'static mut [Channel]>,
+        tx: Option<&'static mut [Channel]>,
+    ) {
+        self.wake();
+        self.cursor = 0;
+        if let Some(rx) = rx {
+            for (d, s) in rx.iter_mut().zip(self.rx.fixed.iter()) {
+                *d = s.clone();
+            }
+            self.rx.pooled = Some(rx);
+        }
+        if let Some(tx) = tx {
+            for (d, s) in tx.iter_mut().zip(self.tx.fixed.iter()) {
+                *d = s.clone();
+            }
+            self.tx.pooled = Some(tx);
+        }
+    }
+
+    /// Gives the channels of [`Pdo::attach_pooled`] back: the fixed ones
+    /// serve again (the caller reconfigures the module).
+    pub(crate) fn detach_pooled(&mut self, port: &mut impl CanPort) {
+        self.wake();
+        // The identifiers the pooled channels subscribed go with them.
+        for ch in self.rx.iter_mut().chain(self.tx.iter_mut()) {
+            update_subscription(port, &mut ch.subscribed, None);
+        }
+        self.resubscribe = true;
+        self.rx.pooled = None;
+        self.tx.pooled = None;
+        self.cursor = 0;
+    }
+
+    /// Whether channels of a dynamic OD's pool are in use.
+    pub fn has_pooled(&self) -> bool {
+        self.rx.pooled.is_some() || self.tx.pooled.is_some()
     }
 
     /// Something may have become due: the next [`Pdo::poll`] looks at
