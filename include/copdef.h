@@ -141,6 +141,9 @@
 #ifndef CCM_USE_STORE_RESTORE
 #define CCM_USE_STORE_RESTORE FALSE
 #endif
+/* TRUE: every CcmProcess compares the mapped data of the TPDOs of
+ * transmission type 0, 254 and 255 with what they sent last and sends them
+ * when it changed (the application need not call CcmSignalCheckVar). */
 #ifndef CCM_USE_PDO_CHECK_VAR
 #define CCM_USE_PDO_CHECK_VAR TRUE
 #endif

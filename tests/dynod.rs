@@ -1011,3 +1011,60 @@ fn structure_entries_are_checked_not_written() {
         CopKernel::DynInvalidConfig
     );
 }
+
+node!(on_change);
+static IMAGE_CHANGE: [AtomicU8; 32] = decl::zeroed();
+
+/// `CCM_USE_PDO_CHECK_VAR` (SYS TEC copdef.h default TRUE; pdo.h
+/// `PdoProcessCheckVar`: TPDOs of types 0 and 254 are compared and marked
+/// for sending when their data changed): an event-driven TPDO without event
+/// timer whose mapped bytes the application changes in the process image,
+/// calling neither `CcmSignalCheckVar` nor `CcmSendPdo`, is sent in the
+/// next cycle, once per change.
+#[test]
+fn event_driven_tpdo_follows_the_process_image() {
+    let bus = SimBus::new();
+    let mut n = Node::new(&bus, on_change::od(), 1);
+    let c = container(
+        &[
+            (0x1800, 1, 0x70, &[0x81, 0x01, 0, 0]),
+            (0x1800, 2, 0x70, &[0xFE]),
+            (0x1A00, 0, 0x70, &[1]),
+            (0x1A00, 1, 0x70, &U32_1A00_1),
+            (0xA4C0, 0, 0x30, &[1]),
+            (0xA4C0, 1, 0xF0, &[0]),
+        ],
+        None,
+        None,
+    );
+    let pi = n
+        .build(&on_change::POOL, &c, Some(&IMAGE_CHANGE))
+        .unwrap()
+        .pi;
+    n.command(NmtCommand::StartRemoteNode);
+    let tpdos = |bus: &SimBus| {
+        bus.sent()
+            .into_iter()
+            .filter(|(_, _, f)| f.id.raw() == 0x181)
+            .map(|(_, _, f)| f.data[..usize::from(f.len)].to_vec())
+            .collect::<Vec<_>>()
+    };
+    bus.clear_trace();
+    for _ in 0..5 {
+        n.cycle();
+        bus.advance_ms(1);
+    }
+    assert!(tpdos(&bus).is_empty(), "nothing changed, nothing sent");
+    let out = pi.output_offset as usize;
+    IMAGE_CHANGE[out].store(0x5A, Ordering::Relaxed);
+    for _ in 0..5 {
+        n.cycle();
+        bus.advance_ms(1);
+    }
+    IMAGE_CHANGE[out].store(0x5B, Ordering::Relaxed);
+    for _ in 0..5 {
+        n.cycle();
+        bus.advance_ms(1);
+    }
+    assert_eq!(tpdos(&bus), [vec![0x5A], vec![0x5B]], "one TPDO per change");
+}

@@ -33,7 +33,8 @@
 //!   A value outside an object's range makes the whole PDO be dropped.
 //! * Event-driven TPDOs (254/255) are sent on an application event
 //!   (`CcmSignalVar`, `CcmSignalStaticPdo`, a changed value found by
-//!   `CcmSignalCheckVar`) or when the event timer runs out; never more
+//!   `CcmSignalCheckVar`, and with `CCM_USE_PDO_CHECK_VAR` a changed value
+//!   found in any cycle) or when the event timer runs out; never more
 //!   often than the inhibit time allows. The event timer starts when the
 //!   node enters OPERATIONAL and restarts with every transmission.
 //! * A synchronous TPDO is discarded when the SYNC window (0x1007) has
@@ -1026,9 +1027,17 @@ impl Pdo {
             if state == NmtState::Operational && !self.quiet {
                 self.check_deadlines(od, port, now, emcy);
                 self.event_timers(now);
-                if self.check_var && self.lock_depth == 0 {
-                    self.check_var = false;
-                    self.check_vars(od);
+            }
+            // `CCM_USE_PDO_CHECK_VAR`: the comparison runs in every cycle
+            // (the application may change mapped data without telling, as
+            // through a process image), also when nothing else is armed.
+            if state == NmtState::Operational
+                && self.lock_depth == 0
+                && (self.check_var || crate::config::CCM_USE_PDO_CHECK_VAR)
+            {
+                let signalled = core::mem::take(&mut self.check_var);
+                if self.check_vars(od, signalled) {
+                    self.quiet = false;
                 }
             }
         }
@@ -1103,18 +1112,29 @@ impl Pdo {
         }
     }
 
-    fn check_vars(&mut self, od: &ObjectDictionary) {
+    /// Marks the event-driven and acyclic TPDOs whose data differ from
+    /// what they sent last; true when one was marked. A TPDO that has not
+    /// sent since entering OPERATIONAL is marked on `CcmSignalCheckVar`
+    /// (`signalled`); the unsignalled comparison of every cycle takes its
+    /// current data as the reference instead, so that it is sent when they
+    /// change, not merely because the node started.
+    fn check_vars(&mut self, od: &ObjectDictionary, signalled: bool) -> bool {
+        let mut marked = false;
         for ch in self.tx.iter_mut().filter(|c| c.usable()) {
             let t = ch.cfg.tx_type;
-            if !(tx_type::is_event(t) || t == tx_type::SYNC_ACYCLIC) {
+            if ch.event_pending || !(tx_type::is_event(t) || t == tx_type::SYNC_ACYCLIC) {
                 continue;
             }
             if let Ok(p) = sample(od, ch) {
-                if ch.last_sent != Some(p) {
+                if ch.last_sent.is_none() && !signalled {
+                    ch.last_sent = Some(p);
+                } else if ch.last_sent != Some(p) {
                     ch.event_pending = true;
+                    marked = true;
                 }
             }
         }
+        marked
     }
 
     fn poll_rpdo(&mut self, n: usize, od: &ObjectDictionary, q: &mut ActionQueue) -> bool {
