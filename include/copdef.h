@@ -159,6 +159,9 @@
 #ifndef CCM_USE_STORE_RESTORE
 #define CCM_USE_STORE_RESTORE FALSE
 #endif
+/* TRUE: every CcmProcess compares the mapped data of the TPDOs of
+ * transmission type 0, 254 and 255 with what they sent last and sends them
+ * when it changed (the application need not call CcmSignalCheckVar). */
 #ifndef CCM_USE_PDO_CHECK_VAR
 #define CCM_USE_PDO_CHECK_VAR TRUE
 #endif
@@ -236,7 +239,7 @@
 #endif
 /* Bytes of the pool from which the dynamic OD builds its tables. */
 #ifndef OBD_DYNAMIC_POOL_SIZE
-#define OBD_DYNAMIC_POOL_SIZE 4096
+#define OBD_DYNAMIC_POOL_SIZE 8192
 #endif
 #ifndef OBD_USE_STORE_RESTORE
 #define OBD_USE_STORE_RESTORE CCM_USE_STORE_RESTORE

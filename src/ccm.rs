@@ -261,6 +261,11 @@ impl Stack {
         &mut self.od
     }
 
+    /// Mutable access to the PDO module (dynamic OD: its pooled channels).
+    pub(crate) fn pdo_mut(&mut self) -> &mut Pdo {
+        &mut self.pdo
+    }
+
     /// This node's ID.
     pub fn node_id(&self) -> u8 {
         self.node_id
@@ -723,6 +728,12 @@ impl Stack {
         self.od.restore_defaults(0x1400, 0x1BFF);
         self.sdo.cancel();
         self.reconfigure_modules(port, now);
+        if self.pdo.has_pooled() {
+            // The pooled channels have let go of their identifiers (their
+            // PDOs are gone); the fixed ones serve again.
+            self.pdo.detach_pooled(port);
+            self.pdo.reconfigure(&self.od, self.node_id, port);
+        }
         self.pdo.on_state(NmtState::PreOperational, now);
     }
 

@@ -939,3 +939,132 @@ fn a_pool_without_room_for_the_index_builds_the_same() {
     t.destroy_in(&TIGHT);
     assert!(!TIGHT.is_in_use());
 }
+
+/// A node with the pre-defined error field and the store / restore
+/// objects of an ODBuilder-generated dictionary (0x1003 with 4 entries,
+/// 0x1010 / 0x1011 with sub 1).
+mod structure_node {
+    use super::*;
+
+    pub static POOL: DynPool<4096> = DynPool::new();
+    static E0: [AtomicU8; 1] = decl::zeroed();
+    static E1: [AtomicU8; 4] = decl::zeroed();
+    static E2: [AtomicU8; 4] = decl::zeroed();
+    static E3: [AtomicU8; 4] = decl::zeroed();
+    static E4: [AtomicU8; 4] = decl::zeroed();
+    static S1003: [ObdSubEntry; 5] = [
+        ObdSubEntry::ram(0, DataType::UInt8, Access::RW, &E0, Some(&[0])),
+        ObdSubEntry::ram(1, DataType::UInt32, Access::R, &E1, Some(&[0; 4])),
+        ObdSubEntry::ram(2, DataType::UInt32, Access::R, &E2, Some(&[0; 4])),
+        ObdSubEntry::ram(3, DataType::UInt32, Access::R, &E3, Some(&[0; 4])),
+        ObdSubEntry::ram(4, DataType::UInt32, Access::R, &E4, Some(&[0; 4])),
+    ];
+    pub static SAVE: [AtomicU8; 4] = decl::zeroed();
+    static S1010: [ObdSubEntry; 2] = [
+        ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[1]),
+        ObdSubEntry::ram(1, DataType::UInt32, Access::RW, &SAVE, Some(&[0; 4])),
+    ];
+    static LOAD: [AtomicU8; 4] = decl::zeroed();
+    static S1011: [ObdSubEntry; 2] = [
+        ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[1]),
+        ObdSubEntry::ram(1, DataType::UInt32, Access::RW, &LOAD, Some(&[0; 4])),
+    ];
+    static GENERIC: [ObdEntry; 3] = [
+        ObdEntry::new(0x1003, &S1003, None),
+        ObdEntry::new(0x1010, &S1010, None),
+        ObdEntry::new(0x1011, &S1011, None),
+    ];
+
+    pub fn od() -> ObjectDictionary {
+        ObjectDictionary::new(&GENERIC, &[], &[]).unwrap()
+    }
+}
+
+/// Entries that describe the device are not ordinary writes: 0x1003 sub 0
+/// of a DCF is the number of error entries the device holds (an ordinary
+/// write accepts only 0, CiA 301 7.5.2.4), 0x1010 / 0x1011 sub 1 are the
+/// store / restore capabilities (written, commands needing "save" /
+/// "load", CiA 301 7.5.2.13/14).
+#[test]
+fn structure_entries_are_checked_not_written() {
+    let bus = SimBus::new();
+    let mut n = Node::new(&bus, structure_node::od(), 3);
+    let entries: Vec<Spec> = vec![
+        (0x1003, 0, 0x70, &[4]),
+        (0x1003, 1, 0x30, &[0, 0, 0, 0]),
+        (0x1010, 0, 0x30, &[1]),
+        (0x1010, 1, 0x70, &[1, 0, 0, 0]),
+        (0x1011, 0, 0x30, &[1]),
+        (0x1011, 1, 0x70, &[1, 0, 0, 0]),
+        (0x2000, 0, 0x70, &[7]),
+    ];
+    let c = container(&entries, None, None);
+    n.build(&structure_node::POOL, &c, None).unwrap();
+    assert_eq!(n.uint(0x1003, 0), 0, "no error was added");
+    assert_eq!(n.uint(0x1010, 1), 0, "no store command was given");
+    assert_eq!(n.uint(0x2000, 0), 7, "the ordinary entry was applied");
+    n.destroy_in(&structure_node::POOL);
+    // More entries than the object holds: the object cannot grow.
+    let c = container(&[(0x1003, 0, 0x70, &[5])], None, None);
+    assert_eq!(
+        n.build(&structure_node::POOL, &c, None).unwrap_err(),
+        CopKernel::DynInvalidConfig
+    );
+}
+
+node!(on_change);
+static IMAGE_CHANGE: [AtomicU8; 32] = decl::zeroed();
+
+/// `CCM_USE_PDO_CHECK_VAR` (SYS TEC copdef.h default TRUE; pdo.h
+/// `PdoProcessCheckVar`: TPDOs of types 0 and 254 are compared and marked
+/// for sending when their data changed): an event-driven TPDO without event
+/// timer whose mapped bytes the application changes in the process image,
+/// calling neither `CcmSignalCheckVar` nor `CcmSendPdo`, is sent in the
+/// next cycle, once per change.
+#[test]
+fn event_driven_tpdo_follows_the_process_image() {
+    let bus = SimBus::new();
+    let mut n = Node::new(&bus, on_change::od(), 1);
+    let c = container(
+        &[
+            (0x1800, 1, 0x70, &[0x81, 0x01, 0, 0]),
+            (0x1800, 2, 0x70, &[0xFE]),
+            (0x1A00, 0, 0x70, &[1]),
+            (0x1A00, 1, 0x70, &U32_1A00_1),
+            (0xA4C0, 0, 0x30, &[1]),
+            (0xA4C0, 1, 0xF0, &[0]),
+        ],
+        None,
+        None,
+    );
+    let pi = n
+        .build(&on_change::POOL, &c, Some(&IMAGE_CHANGE))
+        .unwrap()
+        .pi;
+    n.command(NmtCommand::StartRemoteNode);
+    let tpdos = |bus: &SimBus| {
+        bus.sent()
+            .into_iter()
+            .filter(|(_, _, f)| f.id.raw() == 0x181)
+            .map(|(_, _, f)| f.data[..usize::from(f.len)].to_vec())
+            .collect::<Vec<_>>()
+    };
+    bus.clear_trace();
+    for _ in 0..5 {
+        n.cycle();
+        bus.advance_ms(1);
+    }
+    assert!(tpdos(&bus).is_empty(), "nothing changed, nothing sent");
+    let out = pi.output_offset as usize;
+    IMAGE_CHANGE[out].store(0x5A, Ordering::Relaxed);
+    for _ in 0..5 {
+        n.cycle();
+        bus.advance_ms(1);
+    }
+    IMAGE_CHANGE[out].store(0x5B, Ordering::Relaxed);
+    for _ in 0..5 {
+        n.cycle();
+        bus.advance_ms(1);
+    }
+    assert_eq!(tpdos(&bus), [vec![0x5A], vec![0x5B]], "one TPDO per change");
+}

@@ -8,13 +8,14 @@
 //! # The pool (no heap)
 //! The original takes the tables from `COP_MALLOC`; this library takes them
 //! from a static pool of `OBD_DYNAMIC_POOL_SIZE` bytes (build switch,
-//! default 4096; 0 when `OBD_USE_DYNAMIC_OD` is FALSE). One build uses it
+//! default 8192; 0 when `OBD_USE_DYNAMIC_OD` is FALSE). One build uses it
 //! from offset 0, in this order:
 //!
 //! | region | size |
 //! |---|---|
 //! | index table (`tObdEntry`): the application's user part merged with the new objects, sorted | (user entries + new indices) × `size_of::<ObdEntry>()` (16 bytes on 32-bit targets) |
 //! | subindex tables (`tObdSubEntry`) of the new objects | new subindices × `size_of::<ObdSubEntry>()` (16 bytes on 32-bit targets) |
+//! | PDO channels, only when `PDO_MAX_RXPDO_IN_OBD` / `PDO_MAX_TXPDO_IN_OBD` is 0 and the container has PDOs of that direction | (highest RPDO number + 1 + highest TPDO number + 1) × the state of one PDO ([`crate::pdo::channel_size`]) |
 //! | variables that are not in the process image | their C width; strings capacity + 1 |
 //! | snapshot of the existing values the build overwrites | 5 bytes + the value per write (undo of a refused build) |
 //! | copy of the container's index segment | its size (the values re-applied after NMT resets) |
@@ -63,6 +64,7 @@ use crate::od::dcf::{Container, HEADER_SIZE};
 use crate::od::dynamic::{BuildInfo, Initial, Installed, NewSub, Place, Plan, image_overlaps_in};
 use crate::od::value;
 use crate::od::{ObdEntry, ObdSubEntry};
+use crate::pdo::Channel;
 use crate::port::{CanPort, Clock, Ticks};
 
 /// `tProcessImageDscrpt` (ccmdyn.h): the process image the application
@@ -145,6 +147,9 @@ struct Layout {
     entries: usize,
     subs_at: usize,
     subs: usize,
+    chan_at: usize,
+    rx_channels: usize,
+    tx_channels: usize,
     data_at: usize,
     snap_at: usize,
     copy_at: usize,
@@ -158,7 +163,14 @@ impl Layout {
             entries.checked_mul(size_of::<ObdEntry>())?,
             align_of::<ObdSubEntry>(),
         );
-        let data_at = subs_at.checked_add(plan.new_subs.checked_mul(size_of::<ObdSubEntry>())?)?;
+        let subs_end = subs_at.checked_add(plan.new_subs.checked_mul(size_of::<ObdSubEntry>())?)?;
+        let chan_at = align_up(subs_end, align_of::<Channel>());
+        let channels = plan.rx_channels.checked_add(plan.tx_channels)?;
+        let data_at = if channels == 0 {
+            subs_end
+        } else {
+            chan_at.checked_add(channels.checked_mul(size_of::<Channel>())?)?
+        };
         let snap_at = data_at.checked_add(plan.data_bytes)?;
         let copy_at = snap_at.checked_add(plan.snapshot_bytes)?;
         let end = copy_at.checked_add(plan.container().index_segment().len())?;
@@ -166,6 +178,9 @@ impl Layout {
             entries,
             subs_at,
             subs: plan.new_subs,
+            chan_at,
+            rx_channels: plan.rx_channels,
+            tx_channels: plan.tx_channels,
             data_at,
             snap_at,
             copy_at,
@@ -440,8 +455,37 @@ impl<const N: usize> DynPool<N> {
         // The candidate is the stack's dictionary with the new user part,
         // already validated.
         *stack.od_mut() = candidate;
+        let pooled = layout.rx_channels + layout.tx_channels > 0;
+        if pooled {
+            // SAFETY: chan_at is aligned for Channel and chan_at + channels
+            // * size <= data_at <= N (Layout::of); the region is claimed
+            // pool memory nobody else refers to. Every slot is written
+            // before the slices are made.
+            let (rx, tx) = unsafe {
+                let first = base.add(layout.chan_at) as *mut Channel;
+                let total = layout.rx_channels + layout.tx_channels;
+                for i in 0..total {
+                    first.add(i).write(Channel::new());
+                }
+                (
+                    core::slice::from_raw_parts_mut(first, layout.rx_channels),
+                    core::slice::from_raw_parts_mut(
+                        first.add(layout.rx_channels),
+                        layout.tx_channels,
+                    ),
+                )
+            };
+            stack.pdo_mut().attach_pooled(
+                (layout.rx_channels > 0).then_some(rx),
+                (layout.tx_channels > 0).then_some(tx),
+            );
+            stack.reload_configuration(port, now);
+        }
         if let Err(e) = plan.apply(stack, snapshot, now) {
             let _ = stack.od_mut().set_user_part(original);
+            if pooled {
+                stack.pdo_mut().detach_pooled(port);
+            }
             stack.reload_configuration(port, now);
             return Err(e);
         }

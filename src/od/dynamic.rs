@@ -15,7 +15,14 @@
 //!   CPU's byte order.
 //! * **existing, not writable** (read-only or constant): the entry is
 //!   checked for existence and otherwise ignored; the firmware's value
-//!   wins. Real containers carry such entries (0x1000, 0x1018).
+//!   wins. Real containers carry such entries (0x1000, 0x1008, 0x1018):
+//!   the identity and device type stay the firmware's.
+//! * **existing, describing the device** ([`describes_structure`]): sub 0
+//!   of the pre-defined error field 0x1003 (the number of entries the
+//!   device holds, at most its subindices, else `kCopDynInvalidConfig`)
+//!   and the store / restore capabilities 0x1010 / 0x1011 sub 1.. are
+//!   checked and not written: written, they would be commands (clear the
+//!   error history, save or restore), and 0x1003 sub 0 accepts only 0.
 //! * **new**: the object is created in the user part. Its type comes from
 //!   the attribute byte (BOOLEAN, VISIBLE_STRING, NUMERIC = UNSIGNEDn of the
 //!   entry's size, none = DOMAIN), its access from the READ/WRITE/PDO_MAPP
@@ -85,7 +92,7 @@
 //! * `OBD_USE_DYNAMIC_OD` (build script key; `COP_OBD_USE_DYNAMIC_OD` for
 //!   Rust builds, default on): FALSE leaves the C API without pool, so
 //!   `DynBuildOd` answers `kCopDynNoMemory`. `OBD_DYNAMIC_POOL_SIZE`
-//!   (default 4096) sizes the pool that replaces `COP_MALLOC`.
+//!   (default 8192, room for the 128 entries of a typical slave container) sizes the pool that replaces `COP_MALLOC`.
 //! * `OBD_USER_OD`, `OBD_USE_VARIABLE_SUBINDEX_TAB`: the seed needs both
 //!   for the dynamic OD; here the user part always exists and the new
 //!   subindex tables are built in the pool, so they are accepted and not
@@ -317,6 +324,12 @@ pub struct Plan<'a> {
     /// True when the container has entries of PDO parameters
     /// (0x1400–0x1BFF).
     pdo_entries: bool,
+    /// RPDO channels the pool provides: when `PDO_MAX_RXPDO_IN_OBD` is 0
+    /// (the PDOs come from the container) the highest RPDO number the
+    /// container touches + 1, else 0 (the build's capacity applies).
+    pub rx_channels: usize,
+    /// TPDO channels the pool provides (as `rx_channels`).
+    pub tx_channels: usize,
 }
 
 /// Note of an entry that writes an existing object (which exists before the
@@ -348,6 +361,35 @@ fn unsigned_of(len: usize) -> Option<DataType> {
         8 => DataType::UInt64,
         _ => return None,
     })
+}
+
+/// Pre-defined error field (CiA 301): sub 0 counts the errors held.
+const ERROR_FIELD: u16 = 0x1003;
+
+/// True for existing entries that describe the device rather than set a
+/// value, and so are not written (ordinary writes would be refused or
+/// would act): sub 0 of the pre-defined error field (a DCF carries the
+/// number of entries the device holds; writing it means "clear the
+/// errors", and only 0 is accepted), and the subindices of 0x1010 / 0x1011
+/// from 1 on (in a DCF the device's store / restore capabilities; written,
+/// they are commands that need the signature "save" / "load").
+pub fn describes_structure(index: u16, sub: u8) -> bool {
+    matches!((index, sub), (ERROR_FIELD, 0) | (0x1010 | 0x1011, 1..))
+}
+
+/// 0x1003 sub 0 of a container: the number of entries the object holds,
+/// at most the subindices the dictionary has (`kCopDynInvalidConfig`
+/// otherwise: an existing object cannot grow).
+fn check_error_field_count(od: &ObjectDictionary, data: &[u8]) -> Result<(), CopKernel> {
+    let count = match data {
+        [n] => *n,
+        _ => return Err(CopKernel::DynInvalidConfig),
+    };
+    if count == 0 || od.find(ERROR_FIELD, count).is_ok() {
+        Ok(())
+    } else {
+        Err(CopKernel::DynInvalidConfig)
+    }
 }
 
 fn is_pdo_param(index: u16) -> bool {
@@ -410,7 +452,24 @@ impl<'a> Plan<'a> {
             pi: PiParams::default(),
             notes: &[],
             pdo_entries: c.entries_in(0x1400, 0x1BFF).next().is_some(),
+            rx_channels: 0,
+            tx_channels: 0,
         };
+        // With a capacity of 0 (obdcfg.h of a node whose PDOs all come
+        // from its container) the channels of the PDOs the container
+        // touches are taken from the pool.
+        for e in c.entries_in(0x1400, 0x1BFF) {
+            if let Some(q) = PdoIndex::of(e.index) {
+                let n = usize::from(q.number) + 1;
+                let (fixed, pooled) = match q.dir {
+                    Direction::Rx => (crate::config::PDO_MAX_RXPDO_IN_OBD, &mut p.rx_channels),
+                    Direction::Tx => (crate::config::PDO_MAX_TXPDO_IN_OBD, &mut p.tx_channels),
+                };
+                if fixed == 0 && n > *pooled {
+                    *pooled = n;
+                }
+            }
+        }
         // Only network variables of seed table 2 count for the layout.
         for e in c.entries_in(dcf::NETVAR_INPUT_BASE, 0xA8FF) {
             if !p.exists(e.index) {
@@ -461,7 +520,10 @@ impl<'a> Plan<'a> {
                         .map_err(|_| CopKernel::ObdSubindexNotExist)?,
                 };
                 found = Some((e.index, e.sub, obj));
-                let writable = obj.access().writable();
+                let writable = obj.access().writable() && !describes_structure(e.index, e.sub);
+                if (e.index, e.sub) == (ERROR_FIELD, 0) {
+                    check_error_field_count(od, e.data)?;
+                }
                 if writable {
                     od.stage(&obj, ByteOrder::Wire, e.data)
                         .map_err(|err| err.kernel)?;
@@ -769,8 +831,8 @@ impl<'a> Plan<'a> {
                 check_identifier(cob, crate::config::CDRV_CAN20B)
                     .map_err(|_| CopKernel::CobIllegalCanId)?;
                 let capacity = match p.dir {
-                    Direction::Rx => crate::config::PDO_MAX_RXPDO_IN_OBD,
-                    Direction::Tx => crate::config::PDO_MAX_TXPDO_IN_OBD,
+                    Direction::Rx => crate::config::PDO_MAX_RXPDO_IN_OBD.max(self.rx_channels),
+                    Direction::Tx => crate::config::PDO_MAX_TXPDO_IN_OBD.max(self.tx_channels),
                 };
                 if usize::from(p.number) >= capacity {
                     return Err(CopKernel::CobNoFreeEntry);
@@ -828,7 +890,7 @@ impl<'a> Plan<'a> {
         // `find` fails for an index the dictionary does not have.
         self.od
             .find(index, sub)
-            .is_ok_and(|o| o.access().writable())
+            .is_ok_and(|o| o.access().writable() && !describes_structure(index, sub))
     }
 
     /// Writes the container's values into `stack` in the order of the
@@ -1168,7 +1230,7 @@ pub fn reapply(od: &ObjectDictionary, installed: &Installed, from: u16, to: u16)
             continue;
         };
         let is_static = is_static(od, installed.original_user, e.index);
-        if is_static && !obj.access().writable() {
+        if is_static && (!obj.access().writable() || describes_structure(e.index, e.sub)) {
             continue;
         }
         if let Ok(staged) = od.stage(&obj, ByteOrder::Wire, e.data) {

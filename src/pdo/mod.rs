@@ -33,7 +33,8 @@
 //!   A value outside an object's range makes the whole PDO be dropped.
 //! * Event-driven TPDOs (254/255) are sent on an application event
 //!   (`CcmSignalVar`, `CcmSignalStaticPdo`, a changed value found by
-//!   `CcmSignalCheckVar`) or when the event timer runs out; never more
+//!   `CcmSignalCheckVar`, and with `CCM_USE_PDO_CHECK_VAR` a changed value
+//!   found in any cycle) or when the event timer runs out; never more
 //!   often than the inhibit time allows. The event timer starts when the
 //!   node enters OPERATIONAL and restarts with every transmission.
 //! * A synchronous TPDO is discarded when the SYNC window (0x1007) has
@@ -247,8 +248,10 @@ impl Config {
 }
 
 /// One PDO: configuration, application attachments and run-time state.
+/// `pub(crate)` so that the dynamic OD can lay channels out in its pool
+/// ([`Pdo::attach_pooled`]).
 #[derive(Clone, Debug)]
-struct Channel {
+pub(crate) struct Channel {
     cfg: Config,
     /// `CcmDefineStaticPdoTab`: the payload is this byte block, not a
     /// mapping.
@@ -272,7 +275,8 @@ struct Channel {
 }
 
 impl Channel {
-    const fn new() -> Channel {
+    /// A channel without configuration.
+    pub(crate) const fn new() -> Channel {
         Channel {
             cfg: Config::new(),
             static_data: None,
@@ -377,13 +381,58 @@ pub(crate) struct Parts<'a> {
     pub queue: &'a mut ActionQueue,
 }
 
+/// Bytes of the state of one PDO: what a dynamic OD's pool holds per PDO
+/// channel it provides (`PDO_MAX_RXPDO_IN_OBD` / `PDO_MAX_TXPDO_IN_OBD` 0).
+pub const fn channel_size() -> usize {
+    core::mem::size_of::<Channel>()
+}
+
+/// The channels of one direction: the `N` of the build configuration, or
+/// those a dynamic OD laid out in its pool for the PDOs its container
+/// creates beyond them (then these replace the fixed ones).
+#[derive(Debug)]
+struct Channels<const N: usize> {
+    fixed: [Channel; N],
+    pooled: Option<&'static mut [Channel]>,
+}
+
+impl<const N: usize> Channels<N> {
+    const fn new() -> Self {
+        Channels {
+            fixed: [const { Channel::new() }; N],
+            pooled: None,
+        }
+    }
+}
+
+impl<const N: usize> core::ops::Deref for Channels<N> {
+    type Target = [Channel];
+    fn deref(&self) -> &[Channel] {
+        match &self.pooled {
+            Some(p) => p,
+            None => &self.fixed,
+        }
+    }
+}
+
+impl<const N: usize> core::ops::DerefMut for Channels<N> {
+    fn deref_mut(&mut self) -> &mut [Channel] {
+        match &mut self.pooled {
+            Some(p) => p,
+            None => &mut self.fixed,
+        }
+    }
+}
+
 /// The PDO module: `PDO_MAX_RXPDO_IN_OBD` RPDOs (0x1400+n) and
 /// `PDO_MAX_TXPDO_IN_OBD` TPDOs (0x1800+n), and the SYNC consumer.
-/// PDOs of the dictionary beyond these capacities are not served.
-#[derive(Clone, Debug)]
+/// PDOs of the dictionary beyond these capacities are not served, except
+/// those of a dynamic OD whose channels lie in its pool
+/// ([`Pdo::attach_pooled`]).
+#[derive(Debug)]
 pub struct Pdo {
-    rx: [Channel; PDO_MAX_RXPDO_IN_OBD],
-    tx: [Channel; PDO_MAX_TXPDO_IN_OBD],
+    rx: Channels<PDO_MAX_RXPDO_IN_OBD>,
+    tx: Channels<PDO_MAX_TXPDO_IN_OBD>,
     sync: SyncConsumer,
     operational: bool,
     lock_depth: u8,
@@ -410,8 +459,8 @@ impl Pdo {
     /// A module without configuration.
     pub const fn new() -> Pdo {
         Pdo {
-            rx: [const { Channel::new() }; PDO_MAX_RXPDO_IN_OBD],
-            tx: [const { Channel::new() }; PDO_MAX_TXPDO_IN_OBD],
+            rx: Channels::new(),
+            tx: Channels::new(),
             sync: SyncConsumer::new(),
             operational: false,
             lock_depth: 0,
@@ -421,6 +470,50 @@ impl Pdo {
             housekeeping_done: false,
             quiet: false,
         }
+    }
+
+    /// Channels laid out elsewhere (a dynamic OD's pool) replace the fixed
+    /// ones of a direction; `None` keeps that direction's. The state of
+    /// the fixed channels is copied into the first ones. The caller
+    /// reconfigures the module afterwards.
+    pub(crate) fn attach_pooled(
+        &mut self,
+        rx: Option<&'static mut [Channel]>,
+        tx: Option<&'static mut [Channel]>,
+    ) {
+        self.wake();
+        self.cursor = 0;
+        if let Some(rx) = rx {
+            for (d, s) in rx.iter_mut().zip(self.rx.fixed.iter()) {
+                *d = s.clone();
+            }
+            self.rx.pooled = Some(rx);
+        }
+        if let Some(tx) = tx {
+            for (d, s) in tx.iter_mut().zip(self.tx.fixed.iter()) {
+                *d = s.clone();
+            }
+            self.tx.pooled = Some(tx);
+        }
+    }
+
+    /// Gives the channels of [`Pdo::attach_pooled`] back: the fixed ones
+    /// serve again (the caller reconfigures the module).
+    pub(crate) fn detach_pooled(&mut self, port: &mut impl CanPort) {
+        self.wake();
+        // The identifiers the pooled channels subscribed go with them.
+        for ch in self.rx.iter_mut().chain(self.tx.iter_mut()) {
+            update_subscription(port, &mut ch.subscribed, None);
+        }
+        self.resubscribe = true;
+        self.rx.pooled = None;
+        self.tx.pooled = None;
+        self.cursor = 0;
+    }
+
+    /// Whether channels of a dynamic OD's pool are in use.
+    pub fn has_pooled(&self) -> bool {
+        self.rx.pooled.is_some() || self.tx.pooled.is_some()
     }
 
     /// Something may have become due: the next [`Pdo::poll`] looks at
@@ -948,9 +1041,17 @@ impl Pdo {
             if state == NmtState::Operational && !self.quiet {
                 self.check_deadlines(od, port, now, emcy);
                 self.event_timers(now);
-                if self.check_var && self.lock_depth == 0 {
-                    self.check_var = false;
-                    self.check_vars(od);
+            }
+            // `CCM_USE_PDO_CHECK_VAR`: the comparison runs in every cycle
+            // (the application may change mapped data without telling, as
+            // through a process image), also when nothing else is armed.
+            if state == NmtState::Operational
+                && self.lock_depth == 0
+                && (self.check_var || crate::config::CCM_USE_PDO_CHECK_VAR)
+            {
+                let signalled = core::mem::take(&mut self.check_var);
+                if self.check_vars(od, signalled) {
+                    self.quiet = false;
                 }
             }
         }
@@ -1025,18 +1126,29 @@ impl Pdo {
         }
     }
 
-    fn check_vars(&mut self, od: &ObjectDictionary) {
+    /// Marks the event-driven and acyclic TPDOs whose data differ from
+    /// what they sent last; true when one was marked. A TPDO that has not
+    /// sent since entering OPERATIONAL is marked on `CcmSignalCheckVar`
+    /// (`signalled`); the unsignalled comparison of every cycle takes its
+    /// current data as the reference instead, so that it is sent when they
+    /// change, not merely because the node started.
+    fn check_vars(&mut self, od: &ObjectDictionary, signalled: bool) -> bool {
+        let mut marked = false;
         for ch in self.tx.iter_mut().filter(|c| c.usable()) {
             let t = ch.cfg.tx_type;
-            if !(tx_type::is_event(t) || t == tx_type::SYNC_ACYCLIC) {
+            if ch.event_pending || !(tx_type::is_event(t) || t == tx_type::SYNC_ACYCLIC) {
                 continue;
             }
             if let Ok(p) = sample(od, ch) {
-                if ch.last_sent != Some(p) {
+                if ch.last_sent.is_none() && !signalled {
+                    ch.last_sent = Some(p);
+                } else if ch.last_sent != Some(p) {
                     ch.event_pending = true;
+                    marked = true;
                 }
             }
         }
+        marked
     }
 
     fn poll_rpdo(&mut self, n: usize, od: &ObjectDictionary, q: &mut ActionQueue) -> bool {
