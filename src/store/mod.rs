@@ -29,6 +29,8 @@
 //!   the manufacturer-specific subs 4.. the application parameters
 //!   (0x2000–0x9FFF and a dynamic user part, `kObdPartApp2`).
 
+pub mod image;
+
 use crate::error::{CopKernel, CopResult, OdError, SdoAbort};
 use crate::od::{Object, ObjectDictionary, Staged};
 
