@@ -402,8 +402,9 @@ impl Writer<'_> {
     }
 }
 
-/// Stores `parts` from `records` into a new image, keeping the other
-/// parts of the newest valid image (when it belongs to this dictionary).
+/// Stores `parts` from `records` into a new image, leaving out the parts
+/// of `drop` and keeping the other parts of the newest valid image (when
+/// it belongs to this dictionary).
 /// Returns the slot written. A failure at any point leaves the previous
 /// image the newest valid one.
 pub fn store(
@@ -411,6 +412,7 @@ pub fn store(
     records: &dyn Records,
     key: u32,
     parts: u8,
+    drop: u8,
 ) -> Result<SlotInfo, ImageError> {
     let (slot_len, align) = geometry(nv)?;
     let old = newest(nv, records, key).ok();
@@ -452,7 +454,7 @@ pub fn store(
                 Ok(())
             })?;
             present |= part;
-        } else if let Some(o) = old.filter(|o| o.parts & part != 0) {
+        } else if let Some(o) = old.filter(|o| o.parts & part != 0 && drop & part == 0) {
             // Keep the stored part: copy its block from the old slot.
             let (olen, ocrc) = o.blocks.get(i).copied().unwrap_or((0, 0));
             let mut at = payload_start(&o, slot_len, i);

@@ -158,7 +158,7 @@ const ALL: u8 = 0x07;
 #[test]
 fn header_layout_is_the_documented_one() {
     let mut nv = Ram::new();
-    let info = store(&mut nv, &Dict::new(7), KEY, ALL).unwrap();
+    let info = store(&mut nv, &Dict::new(7), KEY, ALL, 0).unwrap();
     assert_eq!(info.slot, 0);
     assert_eq!(&nv.mem[0..4], b"COPS");
     assert_eq!(&nv.mem[4..8], &[1, 0, 48, 0]);
@@ -172,7 +172,7 @@ fn header_layout_is_the_documented_one() {
 #[test]
 fn store_then_load_restores_every_value() {
     let mut nv = Ram::new();
-    store(&mut nv, &Dict::new(7), KEY, ALL).unwrap();
+    store(&mut nv, &Dict::new(7), KEY, ALL, 0).unwrap();
     let mut d = Dict::new(0);
     assert_eq!(load(&mut nv, &mut d, KEY, ALL), Ok(ALL));
     assert_eq!(d, Dict::new(7));
@@ -181,9 +181,9 @@ fn store_then_load_restores_every_value() {
 #[test]
 fn slots_alternate_and_the_sequence_grows() {
     let mut nv = Ram::new();
-    let a = store(&mut nv, &Dict::new(1), KEY, ALL).unwrap();
-    let b = store(&mut nv, &Dict::new(2), KEY, ALL).unwrap();
-    let c = store(&mut nv, &Dict::new(3), KEY, ALL).unwrap();
+    let a = store(&mut nv, &Dict::new(1), KEY, ALL, 0).unwrap();
+    let b = store(&mut nv, &Dict::new(2), KEY, ALL, 0).unwrap();
+    let c = store(&mut nv, &Dict::new(3), KEY, ALL, 0).unwrap();
     assert_eq!((a.slot, b.slot, c.slot), (0, 1, 0));
     assert_eq!((a.seq, b.seq, c.seq), (1, 2, 3));
     let mut d = Dict::new(0);
@@ -194,8 +194,8 @@ fn slots_alternate_and_the_sequence_grows() {
 #[test]
 fn storing_one_part_keeps_the_others() {
     let mut nv = Ram::new();
-    store(&mut nv, &Dict::new(1), KEY, ALL).unwrap();
-    store(&mut nv, &Dict::new(2), KEY, 0x01).unwrap();
+    store(&mut nv, &Dict::new(1), KEY, ALL, 0).unwrap();
+    store(&mut nv, &Dict::new(2), KEY, 0x01, 0).unwrap();
     let mut d = Dict::new(0);
     assert_eq!(load(&mut nv, &mut d, KEY, ALL), Ok(ALL));
     for (i, _, v) in &d.objs {
@@ -222,7 +222,7 @@ fn nothing_stored_is_no_image() {
 fn holds_tells_which_parts_exist() {
     let mut nv = Ram::new();
     let d = Dict::new(5);
-    store(&mut nv, &d, KEY, 0x01).unwrap();
+    store(&mut nv, &d, KEY, 0x01, 0).unwrap();
     assert_eq!(holds(&mut nv, &d, KEY, 0x01), Ok(()));
     assert_eq!(holds(&mut nv, &d, KEY, 0x04), Err(ImageError::NoImage));
 }
@@ -230,7 +230,7 @@ fn holds_tells_which_parts_exist() {
 #[test]
 fn another_dictionary_or_key_is_foreign_and_nothing_is_applied() {
     let mut nv = Ram::new();
-    store(&mut nv, &Dict::new(7), KEY, ALL).unwrap();
+    store(&mut nv, &Dict::new(7), KEY, ALL, 0).unwrap();
     // Another key.
     let mut d = Dict::new(0);
     assert_eq!(
@@ -269,7 +269,7 @@ fn a_record_the_dictionary_refuses_stops_everything_before_applying() {
         }
     }
     let mut nv = Ram::new();
-    store(&mut nv, &Dict::new(7), KEY, ALL).unwrap();
+    store(&mut nv, &Dict::new(7), KEY, ALL, 0).unwrap();
     let mut p = Picky(Dict::new(0));
     assert_eq!(load(&mut nv, &mut p, KEY, ALL), Err(ImageError::Rejected));
     assert_eq!(p.0, Dict::new(0));
@@ -278,8 +278,8 @@ fn a_record_the_dictionary_refuses_stops_everything_before_applying() {
 #[test]
 fn a_bit_flip_in_the_newest_slot_falls_back_to_the_older_image() {
     let mut nv = Ram::new();
-    store(&mut nv, &Dict::new(1), KEY, ALL).unwrap();
-    let b = store(&mut nv, &Dict::new(2), KEY, ALL).unwrap();
+    store(&mut nv, &Dict::new(1), KEY, ALL, 0).unwrap();
+    let b = store(&mut nv, &Dict::new(2), KEY, ALL, 0).unwrap();
     assert_eq!(b.slot, 1);
     let slot_len = nv.size() / 2;
     for at in [8u32, 30, 64, 70, 90] {
@@ -306,12 +306,12 @@ fn too_small_or_odd_memories_are_refused() {
     let mut nv = Ram::new();
     nv.align = 3;
     assert_eq!(
-        store(&mut nv, &Dict::new(1), KEY, ALL),
+        store(&mut nv, &Dict::new(1), KEY, ALL, 0),
         Err(ImageError::Geometry)
     );
     nv.align = 128;
     assert_eq!(
-        store(&mut nv, &Dict::new(1), KEY, ALL),
+        store(&mut nv, &Dict::new(1), KEY, ALL, 0),
         Err(ImageError::Geometry)
     );
     nv.align = 4;
@@ -319,11 +319,11 @@ fn too_small_or_odd_memories_are_refused() {
     for i in 0..40 {
         big.objs.push((0x2100 + i, 0, vec![1; 20]));
     }
-    assert_eq!(store(&mut nv, &big, KEY, ALL), Err(ImageError::Full));
+    assert_eq!(store(&mut nv, &big, KEY, ALL, 0), Err(ImageError::Full));
     // The refused store left nothing valid behind, and an old image stays.
     let mut nv = Ram::new();
-    store(&mut nv, &Dict::new(4), KEY, ALL).unwrap();
-    assert_eq!(store(&mut nv, &big, KEY, ALL), Err(ImageError::Full));
+    store(&mut nv, &Dict::new(4), KEY, ALL, 0).unwrap();
+    assert_eq!(store(&mut nv, &big, KEY, ALL, 0), Err(ImageError::Full));
     let mut d = Dict::new(0);
     load(&mut nv, &mut d, KEY, ALL).unwrap();
     assert_eq!(d, Dict::new(4));
@@ -345,17 +345,17 @@ fn a_power_cut_after_every_byte_leaves_the_old_or_the_new_image() {
     for align in [1u32, 4, 8, 64] {
         let mut base = Ram::new();
         base.align = align;
-        store(&mut base, &Dict::new(1), KEY, ALL).unwrap();
+        store(&mut base, &Dict::new(1), KEY, ALL, 0).unwrap();
         // Bytes a complete store erases and writes.
         let mut probe = base.clone();
         probe.budget = Some(usize::MAX);
-        store(&mut probe, &Dict::new(2), KEY, ALL).unwrap();
+        store(&mut probe, &Dict::new(2), KEY, ALL, 0).unwrap();
         let total = usize::MAX - probe.budget.unwrap();
         let mut generations = Vec::new();
         for cut in 0..=total {
             let mut nv = base.clone();
             nv.budget = Some(cut);
-            let r = store(&mut nv, &Dict::new(2), KEY, ALL);
+            let r = store(&mut nv, &Dict::new(2), KEY, ALL, 0);
             assert_eq!(r.is_ok(), cut == total, "cut {cut}");
             generations.push(restored_generation(&mut nv));
         }
@@ -372,18 +372,18 @@ fn a_power_cut_after_every_byte_leaves_the_old_or_the_new_image() {
 #[test]
 fn a_power_cut_after_every_driver_call_leaves_the_old_or_the_new_image() {
     let mut base = Ram::new();
-    store(&mut base, &Dict::new(1), KEY, ALL).unwrap();
-    store(&mut base, &Dict::new(1), KEY, ALL).unwrap();
+    store(&mut base, &Dict::new(1), KEY, ALL, 0).unwrap();
+    store(&mut base, &Dict::new(1), KEY, ALL, 0).unwrap();
     let mut probe = base.clone();
     probe.calls = Some(usize::MAX);
-    store(&mut probe, &Dict::new(2), KEY, ALL).unwrap();
+    store(&mut probe, &Dict::new(2), KEY, ALL, 0).unwrap();
     let total = usize::MAX - probe.calls.unwrap();
     assert!(total > 4);
     let mut new = 0;
     for cut in 0..=total {
         let mut nv = base.clone();
         nv.calls = Some(cut);
-        let _ = store(&mut nv, &Dict::new(2), KEY, ALL);
+        let _ = store(&mut nv, &Dict::new(2), KEY, ALL, 0);
         if restored_generation(&mut nv) == 2 {
             new += 1;
         }
@@ -391,4 +391,20 @@ fn a_power_cut_after_every_driver_call_leaves_the_old_or_the_new_image() {
     // New only once the header write returned: a cut before the last
     // commit, or none.
     assert_eq!(new, 2);
+}
+
+#[test]
+fn a_dropped_part_is_left_out_and_the_others_kept() {
+    let mut nv = Ram::new();
+    store(&mut nv, &Dict::new(1), KEY, ALL, 0).unwrap();
+    let info = store(&mut nv, &Dict::new(2), KEY, 0, 0x01).unwrap();
+    assert_eq!(info.parts, 0x06);
+    assert_eq!(
+        holds(&mut nv, &Dict::new(0), KEY, 0x01),
+        Err(ImageError::NoImage)
+    );
+    let mut d = Dict::new(9);
+    assert_eq!(load(&mut nv, &mut d, KEY, ALL), Ok(0x06));
+    assert_eq!(d.objs[0].2[0], 9, "Gen not loaded");
+    assert_eq!(d.objs[5].2[0], 1, "Man kept as stored");
 }
