@@ -159,7 +159,7 @@ impl WriteHooks for Hooks<'_> {
             self.pdo.check_write(od, obj, value)?;
         }
         emcy::producer::check_error_field_write(obj, value)?;
-        StoreRestore::check_write(od, obj, value)?;
+        self.store.check_write(od, obj, value, self.state)?;
         Ok(())
     }
 
@@ -186,7 +186,7 @@ impl WriteHooks for Hooks<'_> {
                 self.syncp.reconfigure(od, self.now);
                 self.pdo.after_store(od, obj, self.now);
             }
-            store::LOAD_INDEX => self.store.after_store(od, obj),
+            store::LOAD_INDEX | store::SAVE_INDEX => self.store.after_store(od, obj),
             // SDO server 0x1200..0x127F, SDO client 0x1280..0x12FF.
             0x1200..=0x12FF => self.sdo_changed = true,
             0x1300..=0x13FF => self.srdo.after_store(od, obj),
@@ -662,10 +662,12 @@ impl Stack {
             Internal::RestoreApplication => {
                 self.restore_defaults(0x2000, 0x9FFF);
                 self.store.restored(store::part::APP);
+                self.store.load_parts(&self.od, store::part::APP);
             }
             Internal::RestoreCommunication => {
                 self.restore_defaults(0x1000, 0x1FFF);
                 self.store.restored(store::part::GEN);
+                self.store.load_parts(&self.od, store::part::GEN);
                 self.lgs.reset_communication();
                 self.syncp.reset_communication();
             }

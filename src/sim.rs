@@ -15,6 +15,7 @@ use crate::error::{CopKernel, CopResult};
 use crate::port::{CanFrame, CanPort, Clock, Priority, RxFrame, Ticks};
 
 pub mod faults;
+pub mod nvram;
 pub mod srdo_net;
 
 /// What a fault filter does with a frame.

@@ -21,6 +21,7 @@ use cop::error::{CopKernel, OdError, SdoAbort};
 use cop::event::{ErrCtrlEvent, Event, NmtState};
 use cop::od::{Access, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
 use cop::port::{CanFrame, CanId};
+use cop::sim::nvram::SimNvram;
 use cop::store::{self, part};
 use cop::wire::emcy::{self, Emergency};
 use cop::wire::time::TimeOfDay;
@@ -773,4 +774,182 @@ fn store_functions_tell_that_there_is_no_storage() {
     assert_eq!(s.store().restore_requested(), part::ALL_PARTS);
     net.a.command(NmtCommand::ResetNode);
     assert_eq!(net.a.stack.store().restore_requested(), 0);
+}
+
+/// Node A with a simulated memory registered and `CcmInitStore` done.
+fn with_storage(net: &mut Net, nv: &'static SimNvram, key: u32) -> Result<(), CopKernel> {
+    net.a.stack.set_store_driver(Some(store::Driver(nv)), key);
+    net.a.stack.init_store()
+}
+
+/// A power cycle of node A: the RAM variables lose their values (the
+/// defaults come back), a new stack starts, `CcmInitStore` as the SYS TEC
+/// slave calls it, then boot-up.
+fn power_cycle(net: &mut Net, nv: &'static SimNvram, key: u32) -> Result<(), CopKernel> {
+    let od = node_a::od();
+    od.restore_defaults(0x1000, 0xFFFF);
+    net.a.stack = Stack::new(od, ID_A).unwrap();
+    let r = with_storage(net, nv, key);
+    net.a.stack.connect().unwrap();
+    net.a.drain();
+    r
+}
+
+#[test]
+fn saved_parameters_come_back_after_a_power_cycle() {
+    let mut net = Net::new();
+    let nv = SimNvram::leaked(1024, 4);
+    assert_eq!(with_storage(&mut net, nv, 7), Ok(()));
+    // CiA 301 7.5.2.13: bit 0 "saves parameters on command".
+    assert_eq!(net.a.read(0x1010, 1), 1);
+    assert_eq!(
+        net.a.stack.check_archive(u32::from(part::GEN)),
+        Err(CopKernel::CcmStoreUnvalidState)
+    );
+    net.a.write(0x1017, 0, 500, 2).unwrap();
+    net.a.write(0x2000, 0, 0x55, 1).unwrap();
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1010, 1, store::SAVE_SIGNATURE, 4),
+        confirmed(0x1010, 1)
+    );
+    assert_eq!(net.a.read(0x1010, 1), 1);
+    assert_eq!(
+        net.a.stack.check_archive(u32::from(part::ALL_PARTS)),
+        Ok(())
+    );
+    net.a.write(0x1017, 0, 100, 2).unwrap();
+    assert_eq!(power_cycle(&mut net, nv, 7), Ok(()));
+    assert_eq!(net.a.read(0x1017, 0), 500);
+    assert_eq!(net.a.read(0x2000, 0), 0x55);
+    // A reset node restores the defaults and loads the stored values again.
+    net.a.write(0x2000, 0, 0x11, 1).unwrap();
+    net.a.command(NmtCommand::ResetNode);
+    assert_eq!(net.a.read(0x2000, 0), 0x55);
+    assert_eq!(net.a.read(0x1017, 0), 500);
+}
+
+#[test]
+fn save_while_operational_and_bad_signatures_are_refused() {
+    let mut net = Net::new();
+    let nv = SimNvram::leaked(1024, 4);
+    with_storage(&mut net, nv, 7).unwrap();
+    net.a.command(NmtCommand::StartRemoteNode);
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1010, 1, store::SAVE_SIGNATURE, 4),
+        abort(0x1010, 1, 0x0800_0022)
+    );
+    assert_eq!(
+        net.a.write(0x1010, 1, store::SAVE_SIGNATURE.into(), 4),
+        Err(OdError::new(
+            CopKernel::CcmStoreUnvalidState,
+            SdoAbort::DeviceState
+        ))
+    );
+    net.a.command(NmtCommand::EnterPreOperational);
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1010, 1, store::LOAD_SIGNATURE, 4),
+        abort(0x1010, 1, 0x0800_0020)
+    );
+    assert_eq!(nv.bytes_written(), 0);
+    // Storage full: the memory cannot hold two slots.
+    let tiny = SimNvram::leaked(64, 4);
+    net.a.stack.set_store_driver(Some(store::Driver(tiny)), 7);
+    assert_eq!(net.a.stack.init_store(), Err(CopKernel::CcmStoreHwError));
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1010, 1, store::SAVE_SIGNATURE, 4),
+        abort(0x1010, 1, 0x0800_0020)
+    );
+}
+
+#[test]
+fn load_removes_the_selected_part_from_the_image() {
+    let mut net = Net::new();
+    let nv = SimNvram::leaked(1024, 4);
+    with_storage(&mut net, nv, 7).unwrap();
+    net.a.write(0x1017, 0, 500, 2).unwrap();
+    net.a.write(0x2000, 0, 0x55, 1).unwrap();
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1010, 1, store::SAVE_SIGNATURE, 4),
+        confirmed(0x1010, 1)
+    );
+    // Sub 2: the communication parameters only.
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1011, 2, store::LOAD_SIGNATURE, 4),
+        confirmed(0x1011, 2)
+    );
+    assert_eq!(
+        net.a.stack.check_archive(u32::from(part::GEN)),
+        Err(CopKernel::CcmStoreUnvalidState)
+    );
+    assert_eq!(net.a.stack.check_archive(u32::from(part::MAN)), Ok(()));
+    power_cycle(&mut net, nv, 7).unwrap();
+    assert_eq!(net.a.read(0x1017, 0), 0);
+    assert_eq!(net.a.read(0x2000, 0), 0x55);
+    // CcmStoreRestoreDefault erases everything.
+    net.a.stack.restore_default().unwrap();
+    power_cycle(&mut net, nv, 7).unwrap();
+    assert_eq!(net.a.read(0x2000, 0), 0);
+}
+
+#[test]
+fn an_image_of_another_configuration_is_ignored() {
+    let mut net = Net::new();
+    let nv = SimNvram::leaked(1024, 4);
+    with_storage(&mut net, nv, 7).unwrap();
+    net.a.write(0x2000, 0, 0x55, 1).unwrap();
+    net.a
+        .write(0x1010, 1, store::SAVE_SIGNATURE.into(), 4)
+        .unwrap();
+    assert_eq!(
+        power_cycle(&mut net, nv, 8),
+        Err(CopKernel::CcmStoreUnvalidState)
+    );
+    assert_eq!(
+        net.a.stack.store().last_error(),
+        Some(store::image::ImageError::Foreign)
+    );
+    assert_eq!(net.a.read(0x2000, 0), 0);
+    // The node still saves (a new image replaces the foreign one).
+    assert_eq!(net.a.read(0x1010, 1), 1);
+    net.a.write(0x2000, 0, 0x66, 1).unwrap();
+    net.a
+        .write(0x1010, 1, store::SAVE_SIGNATURE.into(), 4)
+        .unwrap();
+    assert_eq!(power_cycle(&mut net, nv, 8), Ok(()));
+    assert_eq!(net.a.read(0x2000, 0), 0x66);
+}
+
+#[test]
+fn a_power_cut_during_a_save_keeps_the_old_parameters() {
+    let mut net = Net::new();
+    let nv = SimNvram::leaked(1024, 4);
+    with_storage(&mut net, nv, 7).unwrap();
+    net.a.write(0x2000, 0, 0x01, 1).unwrap();
+    net.a
+        .write(0x1010, 1, store::SAVE_SIGNATURE.into(), 4)
+        .unwrap();
+    let per_save = nv.bytes_written();
+    let (mut old, mut new) = (0, 0);
+    for cut in (0..per_save).step_by(7) {
+        power_cycle(&mut net, nv, 7).unwrap();
+        let before = net.a.read(0x2000, 0);
+        net.a.write(0x2000, 0, before ^ 0x80, 1).unwrap();
+        nv.cut_after_bytes(cut);
+        let r = net.a.write(0x1010, 1, store::SAVE_SIGNATURE.into(), 4);
+        nv.power_on();
+        power_cycle(&mut net, nv, 7).unwrap();
+        let after = net.a.read(0x2000, 0);
+        if r.is_ok() {
+            assert_eq!(after, before ^ 0x80);
+            new += 1;
+        } else {
+            assert!(
+                after == before || after == before ^ 0x80,
+                "cut {cut}: {after:#x}"
+            );
+            if after == before { old += 1 } else { new += 1 }
+        }
+    }
+    assert!(old > 0);
+    assert_eq!(old + new, per_save.div_ceil(7));
 }

@@ -224,25 +224,36 @@ impl Stack {
         &self.store
     }
 
-    /// `CcmInitStore`: kCopCcmStoreHwError, always — this library has no
-    /// non-volatile storage. Restoring defaults (0x1011) works without it.
+    /// Registers the application's non-volatile memory and the
+    /// configuration key of its images (`OD_BUILDER_KEY`); `None` leaves
+    /// the node without storage. Used from the next `CcmInitStore` on.
+    pub fn set_store_driver(&mut self, driver: Option<store::Driver>, key: u32) {
+        self.store.set_driver(driver, key);
+        self.store.reconfigure(&self.od);
+    }
+
+    /// `CcmInitStore` ([`StoreRestore::init`]): without a driver
+    /// kCopCcmStoreHwError and nothing else changes; with one the stored
+    /// parameters are loaded.
     pub fn init_store(&mut self) -> CopResult {
-        Err(CopKernel::CcmStoreHwError)
+        let r = self.store.init(&self.od);
+        self.store.reconfigure(&self.od);
+        r
     }
 
     /// `CcmStoreCheckArchivState`: kCopObdIllegalPart for a `part` that is
-    /// not a combination of `kObdPart*` bits, else kCopCcmStoreHwError: no
-    /// archive exists (the application configures its defaults).
+    /// not a combination of `kObdPart*` bits, else
+    /// [`StoreRestore::check_archive`].
     pub fn check_archive(&self, part: u32) -> CopResult {
         store::check_part(part)?;
-        Err(CopKernel::CcmStoreHwError)
+        self.store
+            .check_archive(&self.od, u8::try_from(part).unwrap_or(0))
     }
 
-    /// `CcmStoreRestoreDefault`: there are no stored parameters to delete;
-    /// as with "load" on 0x1011 sub 1, every part is restored to its
-    /// defaults at the next reset (which every reset of this library does).
+    /// `CcmStoreRestoreDefault`: erases the stored parameters (with a
+    /// driver); every part is restored to its defaults at the next reset,
+    /// as with "load" on 0x1011 sub 1.
     pub fn restore_default(&mut self) -> CopResult {
-        self.store.request_restore(store::part::ALL_PARTS);
-        Ok(())
+        self.store.restore_default()
     }
 }
