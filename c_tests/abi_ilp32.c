@@ -22,6 +22,7 @@ _Static_assert(sizeof(tCdrvMsg) == 14 && offsetof(tCdrvMsg, m_bData) == 5, "tCdr
 _Static_assert(offsetof(tCcmInitParam, m_pBdiTable) == 4, "tCcmInitParam.m_pBdiTable");
 _Static_assert(offsetof(tCcmInitParam, m_HwParam) == 20, "tCcmInitParam.m_HwParam");
 _Static_assert(offsetof(tCcmInitParam, m_fpObdInitRam) == 36 && sizeof(tCcmInitParam) == 40, "tCcmInitParam");
+_Static_assert(offsetof(tCopStoreDriver, m_fpOpen) == 16 && sizeof(tCopStoreDriver) == 36, "tCopStoreDriver");
 /* tCdrvInitParam: hardware 20, buffers 28/36/44/52 (8 each), interrupt 60 = 64 */
 _Static_assert(offsetof(tCdrvInitParam, m_RxBuffHigh) == 28 && sizeof(tCdrvInitParam) == 64, "tCdrvInitParam");
 /* tObdSubEntry: 0..3, size 4, default 8, current 12 = 16; tObdEntry 0, 4, 8, 12 = 16 */

@@ -76,6 +76,10 @@ _Static_assert(offsetof(tNmtmSlaveInfo, m_bLostMsgCount) == 1 && offsetof(tNmtmS
 _Static_assert(offsetof(tCobParam, m_bCobType) == sizeof(tCanId) && offsetof(tCobParam, m_bSize) == sizeof(tCanId) + 1, "tCobParam.m_bSize");
 _Static_assert(offsetof(tCobParam, m_CobHdl) == offsetof(tCobParam, m_pArg) + sizeof(void*), "tCobParam.m_CobHdl");
 _Static_assert(sizeof(tCobHdl) == ((COB_MORE_THAN_128_ENTRIES != FALSE) ? 2 : 1), "tCobHdl width");
+/* tCopStoreDriver {void* 0; DWORD 8, 12, 16; five function pointers 24..56} = 64 (LP64) */
+_Static_assert(offsetof(tCopStoreDriver, m_dwSize) == 8 && offsetof(tCopStoreDriver, m_dwConfigKey) == 16, "tCopStoreDriver");
+_Static_assert(offsetof(tCopStoreDriver, m_fpOpen) == 24 && offsetof(tCopStoreDriver, m_fpCommit) == 56, "tCopStoreDriver");
+_Static_assert(sizeof(tCopStoreDriver) == 64, "tCopStoreDriver size");
 /* tSdocParam {BYTE 0; tTime 4; WORD 8; DWORD 12; DWORD 16; BYTE 20} = 24 */
 _Static_assert(offsetof(tSdocParam, m_TimeOut) == 4 && offsetof(tSdocParam, m_bServerNodeId) == 20, "tSdocParam");
 _Static_assert(sizeof(tSdocParam) == 24, "tSdocParam size");

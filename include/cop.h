@@ -599,29 +599,49 @@ tCopKernel CcmConfigSyncProducer(DWORD dwSyncId_p, DWORD dwSyncCycleTime_p);
 tCopKernel CcmTspSend(DWORD dwTimeStampId, const tTimeOfDay *pTimeOfDay_p);
 
 /**
- * `CcmInitStore`: this library has no non-volatile storage driver, so it
- * returns kCopCcmStoreHwError (kCopIllegalInstance before
- * `CcmInitCANopen`). Nothing else depends on it: "save" on 0x1010 is
- * refused with SDO abort 0x08000020 and "load" on 0x1011 restores the
- * defaults at the next reset, whether or not this was called.
+ * `CcmSetStoreDriver`: registers the application's non-volatile memory
+ * (`tCopStoreDriver`, `cop_types.h`) for the current instance, or none
+ * (NULL). May be called before `CcmInitCANopen` (then the instance the
+ * next `CcmInitCANopen` creates uses it); takes effect with the next
+ * `CcmInitStore`. Returns kCopSuccessful; kCopInvalidParam for a
+ * structure without m_fpRead, m_fpWrite, m_fpErase or m_fpCommit;
+ * kCopNoResource from inside an OBD callback. The structure must stay valid and unchanged while the
+ * instance lives.
+ *
+ * # Safety
+ * `pDriver_p` is NULL or points to a `tCopStoreDriver` that lives as long
+ * as the instance.
+ */
+tCopKernel CcmSetStoreDriver(const tCopStoreDriver *pDriver_p);
+
+/**
+ * `CcmInitStore`: opens the registered storage driver (`m_fpOpen`) and
+ * loads the stored parameters (`CcmSetStoreDriver`, README "Store and
+ * restore"). Returns kCopSuccessful (with or without a stored image);
+ * kCopCcmStoreHwError without a driver — start-up goes on with the
+ * dictionary's defaults, "save" is refused with SDO abort 0x08000020,
+ * "load" restores the defaults at the next reset — or when the driver
+ * fails; kCopCcmStoreUnvalidState for an image of another dictionary or
+ * configuration key (ignored: nothing of it is applied, the next "save"
+ * replaces it); kCopIllegalInstance before `CcmInitCANopen`.
  */
 tCopKernel CcmInitStore(void);
 
 /**
- * `CcmStoreCheckArchivState`: whether stored parameters of a part exist.
- * Returns kCopCcmStoreHwError (no storage, so never — the application
- * configures its defaults, as it does for an invalid archive), or
- * kCopObdIllegalPart when `bCurrentOdPart_p` is not a combination of
- * `kObdPart*` bits.
+ * `CcmStoreCheckArchivState`: kCopSuccessful when the stored image holds
+ * every part of `bCurrentOdPart_p`; kCopCcmStoreUnvalidState when it does
+ * not (or nothing is stored); kCopCcmStoreHwError without a driver (or
+ * before `CcmInitStore`); kCopObdIllegalPart when `bCurrentOdPart_p` is
+ * not a combination of `kObdPart*` bits.
  */
 tCopKernel CcmStoreCheckArchivState(tObdPart bCurrentOdPart_p);
 
 /**
- * `CcmStoreRestoreDefault`: deletes the stored parameters — there are none
- * — so that the next reset starts from the dictionary's defaults, which
- * is what every reset of this library does (as after "load" on 0x1011
- * sub 1). Returns kCopSuccessful (kCopIllegalInstance before
- * `CcmInitCANopen`).
+ * `CcmStoreRestoreDefault`: erases the stored parameters (with a
+ * driver) so that the next reset starts from the dictionary's defaults
+ * (as after "load" on 0x1011 sub 1). Returns kCopSuccessful,
+ * kCopCcmStoreHwError when the driver fails, kCopIllegalInstance before
+ * `CcmInitCANopen`.
  */
 tCopKernel CcmStoreRestoreDefault(void);
 

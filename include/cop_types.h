@@ -1037,6 +1037,37 @@ typedef tCopKernel (PUBLIC ROM* tCcmErrorCallback) (CCM_DECL_INSTANCE_HDL_ void 
 typedef tCopKernel (PUBLIC ROM* tAppNmtmEventCallback) (CCM_DECL_INSTANCE_HDL_ BYTE bNodeId_p, tNmtErrCtrlEvent NmtmEvent_p);
 typedef tCopKernel (PUBLIC ROM* tAppHbcEventCallback) (CCM_DECL_INSTANCE_HDL_ BYTE bNodeId_p, tNmtErrCtrlEvent HbcEvent_p);
 
+/* Storage driver contract (this library's own: the SYS TEC headers declare
+ * none). The application's non-volatile memory (EEPROM, flash, a file) for
+ * 0x1010 / 0x1011, registered with CcmSetStoreDriver before CcmInitStore.
+ * Every function gets m_pArg first and returns kCopSuccessful or an error
+ * (any other value: the stack reports kCopCcmStoreHwError, the previous
+ * image stays in force). Offsets count from the start of the memory given
+ * to the stack (0 .. m_dwSize - 1); the stack uses two halves of it (A/B).
+ *   m_fpOpen   optional (NULL): called by CcmInitStore before any access.
+ *   m_fpRead   reads dwSize_p bytes at dwOffset_p, any offset and length.
+ *   m_fpWrite  writes erased memory; dwOffset_p and dwSize_p are multiples
+ *              of m_dwAlign (a power of two, 1 .. 64).
+ *   m_fpErase  erases dwSize_p bytes at dwOffset_p (one half at a time;
+ *              offsets multiples of 64). A flash driver maps its sectors.
+ *   m_fpCommit makes every write so far durable (page buffer, fsync).
+ * m_dwConfigKey is written into every image and required of it when it is
+ * loaded: OD_BUILDER_KEY, or any signature of the configuration. The
+ * structure must stay valid and unchanged while the instance lives (a
+ * static). Sizes: 36 bytes on ARM (ILP32), 64 on x86-64. */
+typedef struct
+{
+    void MEM*  m_pArg;
+    DWORD      m_dwSize;
+    DWORD      m_dwAlign;
+    DWORD      m_dwConfigKey;
+    tCopKernel (PUBLIC ROM* m_fpOpen)   (void MEM* pArg_p);
+    tCopKernel (PUBLIC ROM* m_fpRead)   (void MEM* pArg_p, DWORD dwOffset_p, BYTE MEM* pbData_p, DWORD dwSize_p);
+    tCopKernel (PUBLIC ROM* m_fpWrite)  (void MEM* pArg_p, DWORD dwOffset_p, CONST BYTE MEM* pbData_p, DWORD dwSize_p);
+    tCopKernel (PUBLIC ROM* m_fpErase)  (void MEM* pArg_p, DWORD dwOffset_p, DWORD dwSize_p);
+    tCopKernel (PUBLIC ROM* m_fpCommit) (void MEM* pArg_p);
+} tCopStoreDriver;
+
 /* Parameters of CcmInitCANopen. Sizes: 40 bytes on ARM (ILP32), 72 on
  * x86-64. m_BaudIndex is one byte. */
 typedef struct

@@ -250,6 +250,15 @@ impl Stack {
             .check_archive(&self.od, u8::try_from(part).unwrap_or(0))
     }
 
+    /// Stores `parts` (`kObdPart*` bits) as "save" on 0x1010 does, for
+    /// dictionaries without 0x1010 (same codes: kCopCcmStoreHwError,
+    /// kCopCcmStoreUnvalidState while OPERATIONAL).
+    pub fn save_parameters(&mut self, parts: u8) -> CopResult {
+        self.store
+            .save(&self.od, parts, self.state)
+            .map_err(|e| e.kernel)
+    }
+
     /// `CcmStoreRestoreDefault`: erases the stored parameters (with a
     /// driver); every part is restored to its defaults at the next reset,
     /// as with "load" on 0x1011 sub 1.

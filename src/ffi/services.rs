@@ -8,12 +8,15 @@
 //! first, kCopIllegalInstance before `CcmInitCANopen`, kCopNoResource from
 //! inside an OBD callback.
 
+use super::MAX_INSTANCES;
 use super::driver::TgtClock;
 use super::global::{self, Instance, code, drain};
 use super::ptr::{self, c_try};
 use super::types::*;
-use crate::error::CopKernel;
+use crate::error::{CopKernel, CopResult};
 use crate::port::Clock;
+use crate::store::image::NvFault;
+use crate::store::{Driver, StorageDriver};
 use crate::wire::time::TimeOfDay;
 
 /// `CcmClearPreDefinedErrorField`: empties the pre-defined error field
@@ -108,31 +111,171 @@ pub unsafe extern "C" fn CcmTspSend(
     }))
 }
 
-/// `CcmInitStore`: this library has no non-volatile storage driver, so it
-/// returns kCopCcmStoreHwError (kCopIllegalInstance before
-/// `CcmInitCANopen`). Nothing else depends on it: "save" on 0x1010 is
-/// refused with SDO abort 0x08000020 and "load" on 0x1011 restores the
-/// defaults at the next reset, whether or not this was called.
-#[unsafe(no_mangle)]
-pub extern "C" fn CcmInitStore() -> tCopKernel {
-    code(global::with(|i| i.stack.init_store()))
+/// The application's driver as the stack's [`StorageDriver`].
+struct CStore(&'static tCopStoreDriver);
+
+fn nv(r: tCopKernel) -> Result<(), NvFault> {
+    if r == CopKernel::Successful.code() {
+        Ok(())
+    } else {
+        Err(NvFault)
+    }
 }
 
-/// `CcmStoreCheckArchivState`: whether stored parameters of a part exist.
-/// Returns kCopCcmStoreHwError (no storage, so never — the application
-/// configures its defaults, as it does for an invalid archive), or
-/// kCopObdIllegalPart when `bCurrentOdPart_p` is not a combination of
-/// `kObdPart*` bits.
+fn len32(n: usize) -> Result<DWORD, NvFault> {
+    DWORD::try_from(n).map_err(|_| NvFault)
+}
+
+impl StorageDriver for CStore {
+    fn size(&self) -> u32 {
+        self.0.m_dwSize
+    }
+    fn align(&self) -> u32 {
+        self.0.m_dwAlign
+    }
+    fn read(&self, offset: u32, out: &mut [u8]) -> Result<(), NvFault> {
+        let f = self.0.m_fpRead.ok_or(NvFault)?;
+        // SAFETY: the application's function (checked non-NULL at
+        // registration) gets a buffer of exactly `out.len()` bytes.
+        nv(unsafe { f(self.0.m_pArg, offset, out.as_mut_ptr(), len32(out.len())?) })
+    }
+    fn write(&self, offset: u32, data: &[u8]) -> Result<(), NvFault> {
+        let f = self.0.m_fpWrite.ok_or(NvFault)?;
+        // SAFETY: as in `read`; the data are only read.
+        nv(unsafe { f(self.0.m_pArg, offset, data.as_ptr(), len32(data.len())?) })
+    }
+    fn erase(&self, offset: u32, len: u32) -> Result<(), NvFault> {
+        let f = self.0.m_fpErase.ok_or(NvFault)?;
+        // SAFETY: the application's function, no pointer of ours.
+        nv(unsafe { f(self.0.m_pArg, offset, len) })
+    }
+    fn commit(&self) -> Result<(), NvFault> {
+        let f = self.0.m_fpCommit.ok_or(NvFault)?;
+        // SAFETY: as in `erase`.
+        nv(unsafe { f(self.0.m_pArg) })
+    }
+}
+
+/// The registered drivers, one per instance (a `&'static` the stack can
+/// keep: the C structure itself is the application's static).
+static STORES: [StoreCell; MAX_INSTANCES] =
+    [const { StoreCell(core::cell::UnsafeCell::new(None)) }; MAX_INSTANCES];
+
+struct StoreCell(core::cell::UnsafeCell<Option<CStore>>);
+
+// SAFETY: the API is single-threaded (cop.h); a cell is written only by
+// `CcmSetStoreDriver` for the current instance, inside `global::with`,
+// which refuses re-entry, and only after the stack dropped the previous
+// reference to it.
+unsafe impl Sync for StoreCell {}
+
+/// `CcmSetStoreDriver`: registers the application's non-volatile memory
+/// (`tCopStoreDriver`, `cop_types.h`) for the current instance, or none
+/// (NULL). May be called before `CcmInitCANopen` (then the instance the
+/// next `CcmInitCANopen` creates uses it); takes effect with the next
+/// `CcmInitStore`. Returns kCopSuccessful; kCopInvalidParam for a
+/// structure without m_fpRead, m_fpWrite, m_fpErase or m_fpCommit;
+/// kCopNoResource from inside an OBD callback. The structure must stay valid and unchanged while the
+/// instance lives.
+///
+/// # Safety
+/// `pDriver_p` is NULL or points to a `tCopStoreDriver` that lives as long
+/// as the instance.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn CcmSetStoreDriver(pDriver_p: *const tCopStoreDriver) -> tCopKernel {
+    // SAFETY: the caller's contract: NULL or a structure that outlives the
+    // instance, never changed (so a shared `'static` reference is sound).
+    let drv: Option<&'static tCopStoreDriver> = unsafe { pDriver_p.as_ref() };
+    if let Some(d) = drv {
+        if d.m_fpRead.is_none()
+            || d.m_fpWrite.is_none()
+            || d.m_fpErase.is_none()
+            || d.m_fpCommit.is_none()
+        {
+            return CopKernel::InvalidParam.code();
+        }
+    }
+    let Some(cell) = STORES.get(global::current()) else {
+        return CopKernel::IllegalInstance.code();
+    };
+    // The stack forgets the old driver before its cell is replaced; before
+    // `CcmInitCANopen` there is no stack, and `CcmInitStore` takes the
+    // driver from the cell.
+    let live = global::with(|i| i.stack.set_store_driver(None, 0));
+    if live == Err(CopKernel::NoResource) {
+        return CopKernel::NoResource.code();
+    }
+    // SAFETY: see `StoreCell`: no reference into the cell is alive now
+    // (the stack's was just dropped), and no other code runs.
+    unsafe { *cell.0.get() = drv.map(CStore) };
+    if live.is_ok() {
+        code(global::with(|i| {
+            register(i);
+            CopResult::Ok(())
+        }))
+    } else {
+        CopKernel::Successful.code()
+    }
+}
+
+/// Hands the current instance's registered driver (if any) to its stack.
+fn register(i: &mut Instance) {
+    // SAFETY: see `StoreCell`; only read here, and the cell is not written
+    // while this shared reference lives in the stack (`CcmSetStoreDriver`
+    // takes it back first).
+    let stored = STORES
+        .get(global::current())
+        .and_then(|c| unsafe { (*c.0.get()).as_ref() });
+    match stored {
+        Some(s) => i.stack.set_store_driver(Some(Driver(s)), s.0.m_dwConfigKey),
+        None => i.stack.set_store_driver(None, 0),
+    }
+}
+
+/// `CcmInitStore`: opens the registered storage driver (`m_fpOpen`) and
+/// loads the stored parameters (`CcmSetStoreDriver`, README "Store and
+/// restore"). Returns kCopSuccessful (with or without a stored image);
+/// kCopCcmStoreHwError without a driver — start-up goes on with the
+/// dictionary's defaults, "save" is refused with SDO abort 0x08000020,
+/// "load" restores the defaults at the next reset — or when the driver
+/// fails; kCopCcmStoreUnvalidState for an image of another dictionary or
+/// configuration key (ignored: nothing of it is applied, the next "save"
+/// replaces it); kCopIllegalInstance before `CcmInitCANopen`.
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmInitStore() -> tCopKernel {
+    code(global::with(|i| {
+        register(i);
+        // SAFETY: see `StoreCell`; only read here.
+        if let Some(Some(s)) = STORES
+            .get(global::current())
+            .map(|c| unsafe { &*c.0.get() })
+        {
+            if let Some(open) = s.0.m_fpOpen {
+                // SAFETY: the application's function with its own argument.
+                if unsafe { open(s.0.m_pArg) } != CopKernel::Successful.code() {
+                    return Err(CopKernel::CcmStoreHwError);
+                }
+            }
+        }
+        i.stack.init_store()
+    }))
+}
+
+/// `CcmStoreCheckArchivState`: kCopSuccessful when the stored image holds
+/// every part of `bCurrentOdPart_p`; kCopCcmStoreUnvalidState when it does
+/// not (or nothing is stored); kCopCcmStoreHwError without a driver (or
+/// before `CcmInitStore`); kCopObdIllegalPart when `bCurrentOdPart_p` is
+/// not a combination of `kObdPart*` bits.
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmStoreCheckArchivState(bCurrentOdPart_p: tObdPart) -> tCopKernel {
     code(global::with(|i| i.stack.check_archive(bCurrentOdPart_p)))
 }
 
-/// `CcmStoreRestoreDefault`: deletes the stored parameters — there are none
-/// — so that the next reset starts from the dictionary's defaults, which
-/// is what every reset of this library does (as after "load" on 0x1011
-/// sub 1). Returns kCopSuccessful (kCopIllegalInstance before
-/// `CcmInitCANopen`).
+/// `CcmStoreRestoreDefault`: erases the stored parameters (with a
+/// driver) so that the next reset starts from the dictionary's defaults
+/// (as after "load" on 0x1011 sub 1). Returns kCopSuccessful,
+/// kCopCcmStoreHwError when the driver fails, kCopIllegalInstance before
+/// `CcmInitCANopen`.
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmStoreRestoreDefault() -> tCopKernel {
     code(global::with(|i| i.stack.restore_default()))

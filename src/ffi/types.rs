@@ -527,3 +527,50 @@ static_assertions::const_assert_eq!(
     core::mem::size_of::<tSrdoMappParam>(),
     4 + 4 * crate::config::SRDO_MAX_MAPPENTRIES
 );
+
+/// `tCopStoreDriver` (`cop_types.h`): the application's non-volatile
+/// memory for store / restore.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct tCopStoreDriver {
+    /// Handed to every function.
+    pub m_pArg: *mut c_void,
+    /// Usable bytes.
+    pub m_dwSize: DWORD,
+    /// Write granularity.
+    pub m_dwAlign: DWORD,
+    /// Configuration key of the images.
+    pub m_dwConfigKey: DWORD,
+    /// Optional: called by `CcmInitStore`.
+    pub m_fpOpen: Option<unsafe extern "C" fn(pArg_p: *mut c_void) -> tCopKernel>,
+    /// Reads.
+    pub m_fpRead: Option<
+        unsafe extern "C" fn(
+            pArg_p: *mut c_void,
+            dwOffset_p: DWORD,
+            pbData_p: *mut BYTE,
+            dwSize_p: DWORD,
+        ) -> tCopKernel,
+    >,
+    /// Writes erased memory.
+    pub m_fpWrite: Option<
+        unsafe extern "C" fn(
+            pArg_p: *mut c_void,
+            dwOffset_p: DWORD,
+            pbData_p: *const BYTE,
+            dwSize_p: DWORD,
+        ) -> tCopKernel,
+    >,
+    /// Erases.
+    pub m_fpErase: Option<
+        unsafe extern "C" fn(pArg_p: *mut c_void, dwOffset_p: DWORD, dwSize_p: DWORD) -> tCopKernel,
+    >,
+    /// Makes writes durable.
+    pub m_fpCommit: Option<unsafe extern "C" fn(pArg_p: *mut c_void) -> tCopKernel>,
+}
+
+// tCopStoreDriver: pointer, three DWORDs, five function pointers.
+#[cfg(target_pointer_width = "32")]
+static_assertions::const_assert_eq!(core::mem::size_of::<tCopStoreDriver>(), 36);
+#[cfg(target_pointer_width = "64")]
+static_assertions::const_assert_eq!(core::mem::size_of::<tCopStoreDriver>(), 64);

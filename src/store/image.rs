@@ -9,7 +9,7 @@
 //! | offset | size | field |
 //! |---|---|---|
 //! | 0 | 4 | magic 0x5350_4F43 ("COPS") |
-//! | 4 | 2 | format version ([`VERSION`]) |
+//! | 4 | 2 | format version ([`FORMAT_VERSION`]) |
 //! | 6 | 2 | header length ([`HEADER_LEN`]) |
 //! | 8 | 4 | sequence number (the newer slot has the larger one, modulo 2^32) |
 //! | 12 | 4 | dictionary signature ([`Records::signature`]) |
@@ -41,7 +41,7 @@ use crc::{CRC_32_ISO_HDLC, Crc, NoTable};
 /// "COPS" read as a little-endian UNSIGNED32.
 pub const MAGIC: u32 = 0x5350_4F43;
 /// Format version written and accepted.
-pub const VERSION: u16 = 1;
+pub const FORMAT_VERSION: u16 = 1;
 /// Header length without its CRC.
 pub const HEADER_LEN: usize = 48;
 /// The blocks start here (header and CRC padded to it).
@@ -185,7 +185,7 @@ fn header(
     if le32(&h, 0) != MAGIC || CRC32.checksum(body) != le32(&h, HEADER_LEN) {
         return None;
     }
-    if le16(&h, 4) != VERSION || usize::from(le16(&h, 6)) != HEADER_LEN {
+    if le16(&h, 4) != FORMAT_VERSION || usize::from(le16(&h, 6)) != HEADER_LEN {
         return Some(Err(ImageError::Foreign));
     }
     if le32(&h, 12) != signature || le32(&h, 16) != key {
@@ -486,7 +486,7 @@ pub fn store(
     let seq = old.map_or(1, |o| o.seq.wrapping_add(1));
     let mut h = [0u8; PAYLOAD_OFFSET as usize];
     put(&mut h, 0, &MAGIC.to_le_bytes());
-    put(&mut h, 4, &VERSION.to_le_bytes());
+    put(&mut h, 4, &FORMAT_VERSION.to_le_bytes());
     put(&mut h, 6, &(HEADER_LEN as u16).to_le_bytes());
     put(&mut h, 8, &seq.to_le_bytes());
     put(&mut h, 12, &records.signature().to_le_bytes());

@@ -366,6 +366,12 @@ fn a_power_cut_after_every_byte_leaves_the_old_or_the_new_image() {
         assert!(generations[first_new..].iter().all(|&g| g == 2));
         let padding = PAYLOAD_OFFSET as usize - HEADER_LEN - 4;
         assert_eq!(total + 1 - first_new, padding + 1, "align {align}");
+        println!(
+            "align {align}: power cut at {} points: {} restored (old {first_new}, new {}), 0 mixed",
+            total + 1,
+            generations.len(),
+            generations.len() - first_new
+        );
     }
 }
 
@@ -391,6 +397,12 @@ fn a_power_cut_after_every_driver_call_leaves_the_old_or_the_new_image() {
     // New only once the header write returned: a cut before the last
     // commit, or none.
     assert_eq!(new, 2);
+    println!(
+        "driver calls: power cut at {} points: {} restored (old {}, new {new}), 0 mixed",
+        total + 1,
+        total + 1,
+        total + 1 - new
+    );
 }
 
 #[test]

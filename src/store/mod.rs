@@ -382,6 +382,23 @@ impl StoreRestore {
         Ok(())
     }
 
+    /// "save" of `parts` (`kObdPart*` bits) without the object 0x1010:
+    /// the same rules and refusals as the write of the signature.
+    pub fn save(
+        &mut self,
+        od: &ObjectDictionary,
+        parts: u8,
+        state: NmtState,
+    ) -> Result<(), OdError> {
+        if !self.ready {
+            return Err(REFUSE_SAVE);
+        }
+        if state == NmtState::Operational {
+            return Err(REFUSE_STATE);
+        }
+        self.write_image(od, parts, 0)
+    }
+
     /// Writes a new image: `fresh` from the dictionary, `drop` left out,
     /// the rest kept.
     fn write_image(&mut self, od: &ObjectDictionary, fresh: u8, drop: u8) -> Result<(), OdError> {
@@ -431,13 +448,7 @@ impl StoreRestore {
         let v = value.as_u64();
         let parts = selection(obj.sub());
         if index == SAVE_INDEX && v == Some(u64::from(SAVE_SIGNATURE)) {
-            if !self.ready {
-                return Err(REFUSE_SAVE);
-            }
-            if state == NmtState::Operational {
-                return Err(REFUSE_STATE);
-            }
-            return self.write_image(od, parts, 0);
+            return self.save(od, parts, state);
         }
         if index == LOAD_INDEX && v == Some(u64::from(LOAD_SIGNATURE)) {
             if self.ready {
