@@ -3,7 +3,8 @@
  * dictionary does: the static dictionary has only 0x1000..0x1018
  * (objdict.h), obdcfg.h counts 0 RPDOs and 0 TPDOs, and everything else -
  * 2 RPDOs, 2 TPDOs of transmission type 254, manufacturer objects and
- * network variables - comes from a container dcf2bin made from slave.dcf.
+ * network variables, 127 entries with 0x1003 sub 0 = 4 - comes from a
+ * container dcf2bin made from slave.dcf.
  * The order is CcmInitCANopen, DynBuildOd, CcmConnectToNet; the
  * application exchanges process data only through the process image
  * (no CcmSignalCheckVar, no CcmSendPdo). An external master on the
@@ -12,7 +13,9 @@
  *   boot-up          0x702 [00]                    (CiA 301 7.2.8.3.2.1)
  *   SDO answers      0x582, expedited upload 0x43 / 0x4B / 0x4F
  *                    (CiA 301 7.2.4.3.3) with the firmware's 0x1000 and
- *                    0x1018/4 and the container's 0x1017 and 0x2330/3
+ *                    0x1018/4, the container's 0x1017 and 0x2320/2, and
+ *                    0x1003/0 unchanged although the container carries 4
+ *                    (it describes the device's error field, not a write)
  *   OPERATIONAL      NMT start [01 02]; heartbeat 0x702 [05]
  *   RPDO 0x202       into the input area of the process image
  *   TPDO 0x182       once per change of the output area
@@ -176,7 +179,7 @@ int main (void)
     CHECK(Upload(0x1000, 0, &bCommand) == 0x00020191UL && bCommand == 0x43, "0x1000 firmware value");
     CHECK(Upload(0x1018, 4, &bCommand) == 0x00000007UL && bCommand == 0x43, "0x1018/4 firmware value");
     CHECK(Upload(0x1017, 0, &bCommand) == 100 && bCommand == 0x4B, "0x1017 from the container");
-    CHECK(Upload(0x2330, 3, &bCommand) == 30 && bCommand == 0x4B, "0x2330/3 created by the container");
+    CHECK(Upload(0x2320, 2, &bCommand) == 0x1000 && bCommand == 0x43, "0x2320/2 created by the container");
     CHECK(Upload(0x1003, 0, &bCommand) == 0 && bCommand == 0x4F, "0x1003/0 no error");
     CHECK(Upload(0x1600, 0, &bCommand) == 8 && bCommand == 0x4F, "RPDO 1 mapping count");
 
