@@ -218,7 +218,24 @@ int main (void)
     memset(&Frame, 0, sizeof(Frame));
     CHECK(TakeSent(0x180 + NODE_ID, &Frame) == 1 && Frame.m_abData[1] == 0x5A, "TPDO 1 on the next change");
 
+    /* DynDestroyOd gives the PDO channels back to the pool; the PDOs are
+     * gone (a TPDO no longer follows the image) until the next build */
     CHECK(DynDestroyOd() == kCopSuccessful, "DynDestroyOd");
+    pbOut[2] = 0x77;
+    Process(5);
+    CHECK(TakeSent(0x180 + NODE_ID, NULL) == 0, "no TPDO without the dynamic OD");
+    memset(abProcessImage_l, 0, sizeof(abProcessImage_l));
+    PIDscrpt_l.m_dwProcessImageSize = sizeof(abProcessImage_l);
+    CHECK(DynBuildOd((BYTE FAR*) abSlaveContainer_l, &PIDscrpt_l) == kCopSuccessful, "build again");
+    (void) SimInject(0x000, 0, 2, abStart);
+    Process(5);
+    (void) TakeSent(0, NULL);
+    pbOut[2] = 0x77;
+    Process(5);
+    memset(&Frame, 0, sizeof(Frame));
+    CHECK(TakeSent(0x180 + NODE_ID, &Frame) == 1 && Frame.m_abData[2] == 0x77,
+          "TPDO 1 again after the second build");
+    CHECK(DynDestroyOd() == kCopSuccessful, "DynDestroyOd again");
     (void) CcmShutDownCANopen();
     if (iFailures_l == 0)
     {
