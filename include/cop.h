@@ -197,15 +197,18 @@ tCopKernel CcmCobGetParam(tCobParam *pCobParam_p);
  * kCopIllegalInstance (before `CcmInitCANopen`); kCopNoFreeInstance (a
  * dynamic OD is already built: call `DynDestroyOd` first);
  * kCopDynInvalidConfig (malformed or inconsistent container, a PDO
- * without mapping object, variables sharing bytes of the image);
- * kCopDynNoMemory (the tables do not fit `OBD_DYNAMIC_POOL_SIZE`, or a
- * variable lies outside the process image); kCopCobIllegalCanId;
- * kCopCobNoFreeEntry (PDO number beyond `PDO_MAX_RXPDO_IN_OBD` /
- * `PDO_MAX_TXPDO_IN_OBD`); kCopCobAlreadyExist (two TPDOs with one
+ * without mapping object, variables sharing bytes of the image, a
+ * variable outside the input and output areas of the container's
+ * process-image parameters); kCopDynNoMemory (the tables do not fit
+ * `OBD_DYNAMIC_POOL_SIZE`, or a variable lies outside the process image);
+ * kCopCobIllegalCanId; kCopCobNoFreeEntry (PDO number beyond
+ * `PDO_MAX_RXPDO_IN_OBD` / `PDO_MAX_TXPDO_IN_OBD` when that is above 0;
+ * with 0 the PDOs come from the pool); kCopCobAlreadyExist (two TPDOs with one
  * COB-ID); kCopObdIndexNotExist (an index that cannot be created:
  * 0x0000-0x0FFF, 0xFFFF); kCopObdSubindexNotExist (a subindex an existing
  * object does not have); kCopPdoErrorMapp; or the code of a value the
  * dictionary refused (kCopObdValueLengthError, kCopObdValueToHigh, ...).
+ * `DynGetLastError` names the entry a refusal is about.
  *
  * # Safety
  * `pbDcfSegCont_p` must point to a container readable for the size its
@@ -213,6 +216,27 @@ tCopKernel CcmCobGetParam(tCobParam *pCobParam_p);
  * by the stack) until `DynDestroyOd`.
  */
 tCopKernel DynBuildOd(BYTE *pbDcfSegCont_p, tProcessImageDscrpt *pProcessImageDscrpt_p);
+
+/**
+ * `DynGetLastError` (this library's extension, not part of the SYS TEC
+ * API): why the last `DynBuildOd` of the instance was refused. Writes the
+ * index, subindex and byte offset (from the container's start) of the
+ * container entry the refusal is about, and the code `DynBuildOd`
+ * returned; index, subindex and offset are 0 when the refusal concerns
+ * the container or the pool as a whole (header, sizes, memory, a second
+ * build), and the code is kCopSuccessful after a build that succeeded or
+ * before the first. Each pointer may be NULL (that value is not written).
+ *
+ * Returns kCopSuccessful; kCopIllegalInstance when the instance has no
+ * pool.
+ *
+ * # Safety
+ * Each non-NULL pointer must be valid for writing its type.
+ */
+tCopKernel DynGetLastError(WORD *pwIndex_p,
+                           BYTE *pbSubIndex_p,
+                           DWORD *pdwOffset_p,
+                           tCopKernel *pCode_p);
 
 /**
  * `DynDestroyOd`: removes the dynamic OD and resets the PDO module (seed

@@ -1068,3 +1068,108 @@ fn event_driven_tpdo_follows_the_process_image() {
     }
     assert_eq!(tpdos(&bus), [vec![0x5A], vec![0x5B]], "one TPDO per change");
 }
+
+/// Byte offset of entry `i` of a container: the index segment starts at
+/// the offset in header bytes 8..12 (seed chapter 2, Bild 3: header, then
+/// offset/length per segment); after its 4-byte count each entry has
+/// index (2), subindex (1), length (4) and the value.
+fn entry_offset(c: &[u8], i: usize) -> u32 {
+    let mut at = u32::from_le_bytes(c[8..12].try_into().unwrap()) as usize + 4;
+    for _ in 0..i {
+        let len = u32::from_le_bytes(c[at + 3..at + 7].try_into().unwrap()) as usize;
+        at += 7 + len;
+    }
+    at as u32
+}
+
+node!(coverage);
+static IMAGE_COVERAGE: [AtomicU8; 64] = decl::zeroed();
+
+/// With a parameter segment, every variable of the image lies inside the
+/// image size it names and inside its input or output area; the refusal
+/// names the entry (`DynPool::last_error`, C `DynGetLastError`).
+#[test]
+fn variables_outside_the_areas_are_refused_and_named() {
+    let bus = SimBus::new();
+    let mut n = Node::new(&bus, coverage::od(), 1);
+    let before = snapshot(&n.stack);
+    let pi = PiParams {
+        total: 48,
+        input_offset: 40,
+        input_size: 8,
+        output_offset: 16,
+        output_size: 24,
+    };
+    // Candidates in container order: A040.1, A4C0.1..3, A580.3, 2100,
+    // 2101, 2102, 2103 (as in address_segment_and_parameter_segment_win).
+    // A040.1 at 12: in the image (64 bytes), in no area.
+    let addr = [12u16, 20, 21, 22, 24, 0xFFFF, 0xFFFF, 32, 0xFFFF];
+    let c = container(&sample_entries(), Some(&addr), Some(&pi));
+    assert_eq!(
+        n.build(&coverage::POOL, &c, Some(&IMAGE_COVERAGE)),
+        Err(CopKernel::DynInvalidConfig)
+    );
+    let e = coverage::POOL.last_error().unwrap();
+    assert_eq!(e.code, CopKernel::DynInvalidConfig.code());
+    let b = e.entry.unwrap();
+    let pos = sample_entries()
+        .iter()
+        .position(|s| (s.0, s.1) == (0xA040, 1))
+        .unwrap();
+    assert_eq!((b.index, b.sub), (0xA040, 1));
+    assert_eq!(b.offset, entry_offset(&c, pos));
+    // 0x2102 (4 bytes) at 38: starts in the output area, ends past it.
+    let addr = [40u16, 20, 21, 22, 24, 0xFFFF, 0xFFFF, 38, 0xFFFF];
+    let c = container(&sample_entries(), Some(&addr), Some(&pi));
+    assert_eq!(
+        n.build(&coverage::POOL, &c, Some(&IMAGE_COVERAGE)),
+        Err(CopKernel::DynInvalidConfig)
+    );
+    let b = coverage::POOL.last_error().unwrap().entry.unwrap();
+    assert_eq!((b.index, b.sub), (0x2102, 0));
+    assert_eq!(snapshot(&n.stack), before);
+    assert!(decl::get(&IMAGE_COVERAGE).iter().all(|b| *b == 0));
+    // Inside the areas it builds, and the last error is cleared.
+    let addr = [40u16, 20, 21, 22, 24, 0xFFFF, 0xFFFF, 32, 0xFFFF];
+    let c = container(&sample_entries(), Some(&addr), Some(&pi));
+    n.build(&coverage::POOL, &c, Some(&IMAGE_COVERAGE)).unwrap();
+    assert_eq!(coverage::POOL.last_error(), None);
+    // A second build concerns the container as a whole.
+    assert_eq!(
+        n.build(&coverage::POOL, &c, Some(&IMAGE_COVERAGE)),
+        Err(CopKernel::NoFreeInstance)
+    );
+    assert_eq!(coverage::POOL.last_error().unwrap().entry, None);
+}
+
+node!(blamed_write);
+
+/// A value the dictionary refuses names its entry: 0x1017 with 3 bytes for
+/// an UNSIGNED16 (kCopObdValueLengthError or the like, the dictionary's
+/// code), and a PDO refusal names the PDO's first entry.
+#[test]
+fn refused_values_and_pdos_name_their_entry() {
+    let bus = SimBus::new();
+    let mut n = Node::new(&bus, blamed_write::od(), 1);
+    let entries: Vec<Spec> = vec![(0x2000, 0, 0x70, &[1]), (0x1017, 0, 0x70, &[1, 2, 3])];
+    let c = container(&entries, None, None);
+    let code = n.build(&blamed_write::POOL, &c, None).unwrap_err();
+    let e = blamed_write::POOL.last_error().unwrap();
+    assert_eq!(e.code, code.code());
+    let b = e.entry.unwrap();
+    assert_eq!((b.index, b.sub, b.offset), (0x1017, 0, entry_offset(&c, 1)));
+    // Restricted COB-ID 0x001 of TPDO 1 (CiA 301 7.3.5).
+    let entries: Vec<Spec> = vec![
+        (0x2000, 0, 0x70, &[1]),
+        (0x1800, 2, 0x70, &[0xFE]),
+        (0x1800, 1, 0x70, &[0x01, 0, 0, 0]),
+    ];
+    let c = container(&entries, None, None);
+    assert_eq!(
+        n.build(&blamed_write::POOL, &c, None),
+        Err(CopKernel::CobIllegalCanId)
+    );
+    let b = blamed_write::POOL.last_error().unwrap().entry.unwrap();
+    assert_eq!(b.index, 0x1800);
+    assert_eq!(b.offset, entry_offset(&c, 1));
+}

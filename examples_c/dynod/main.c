@@ -140,6 +140,29 @@ static void ProcessAll (unsigned uMs_p)
     }
 }
 
+/* Which container entry a refused DynBuildOd was about. DynGetLastError is
+ * this library's extension (not in the SYS TEC API). */
+static void PrintBuildError (BYTE bNodeId_p)
+{
+    WORD wIndex = 0;
+    BYTE bSubIndex = 0;
+    DWORD dwOffset = 0;
+    tCopKernel Code = kCopSuccessful;
+
+    (void) DynGetLastError(&wIndex, &bSubIndex, &dwOffset, &Code);
+    if (wIndex != 0)
+    {
+        printf("node %u: DynBuildOd refused entry 0x%04X/%u at container offset %lu: 0x%04lX\n",
+               (unsigned) bNodeId_p, (unsigned) wIndex, (unsigned) bSubIndex,
+               (unsigned long) dwOffset, (unsigned long) Code);
+    }
+    else
+    {
+        printf("node %u: DynBuildOd refused the container: 0x%04lX\n",
+               (unsigned) bNodeId_p, (unsigned long) Code);
+    }
+}
+
 /* The refusals of DynBuildOd on node 1 (all or nothing: nothing changes). */
 static void CheckRefusals (tNode* pNode_p)
 {
@@ -157,6 +180,14 @@ static void CheckRefusals (tNode* pNode_p)
     abDamaged[12]--;
     CHECK(DynDestroyOd() == kCopSuccessful, "DynDestroyOd");
     CHECK(DynBuildOd(abDamaged, &Dscrpt) == kCopDynInvalidConfig, "damaged container refused");
+    {
+        WORD wIndex = 0xFFFF;
+        tCopKernel Code = kCopSuccessful;
+        CHECK(DynGetLastError(&wIndex, NULL, NULL, &Code) == kCopSuccessful
+                  && wIndex == 0 && Code == kCopDynInvalidConfig,
+              "DynGetLastError: the container as a whole");
+        PrintBuildError(pNode_p->m_bNodeId);
+    }
     CHECK(CcmReadObject(0xA4C0, 1, &wHeartbeat, &Size) == kCopObdIndexNotExist,
           "refused container created nothing");
     Size = sizeof(wHeartbeat);
@@ -198,6 +229,7 @@ int main (void)
         CHECK(Ret == kCopSuccessful, "DynBuildOd");
         if (Ret != kCopSuccessful)
         {
+            PrintBuildError(aNodes_l[n].m_bNodeId);
             return 1;
         }
     }

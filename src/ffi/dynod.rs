@@ -53,15 +53,17 @@
 use core::cell::UnsafeCell;
 use core::ffi::c_void;
 use core::mem::{align_of, size_of};
-use core::sync::atomic::{AtomicBool, AtomicU8, Ordering};
+use core::sync::atomic::{AtomicBool, AtomicU8, AtomicU32, Ordering};
 
 use super::global;
-use super::types::{BYTE, DWORD, tCopKernel};
+use super::types::{BYTE, DWORD, WORD, tCopKernel};
 use crate::ccm::Stack;
 use crate::error::CopKernel;
 use crate::od::Part;
 use crate::od::dcf::{Container, HEADER_SIZE};
-use crate::od::dynamic::{BuildInfo, Initial, Installed, NewSub, Place, Plan, image_overlaps_in};
+use crate::od::dynamic::{
+    Blame, BuildInfo, Initial, Installed, NewSub, Place, Plan, image_overlaps_in,
+};
 use crate::od::value;
 use crate::od::{ObdEntry, ObdSubEntry};
 use crate::pdo::Channel;
@@ -124,6 +126,23 @@ struct Mem<const N: usize>([u8; N]);
 pub struct DynPool<const N: usize> {
     mem: UnsafeCell<Mem<N>>,
     claimed: AtomicBool,
+    /// The last build's refusal: code (0 after a build that succeeded).
+    last_code: AtomicU32,
+    /// Index << 8 | subindex of the entry it was about (0: none).
+    last_entry: AtomicU32,
+    /// Byte offset of that entry in the container.
+    last_offset: AtomicU32,
+}
+
+/// What [`DynPool::last_error`] reports about the last build.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BuildError {
+    /// The code the build returned (`tCopKernel`, [`CopKernel::code`]).
+    pub code: u32,
+    /// The container entry the refusal is about; `None` when it concerns
+    /// the container or the pool as a whole (header, sizes, memory, a
+    /// second build).
+    pub entry: Option<Blame>,
 }
 
 // SAFETY: the memory is written only by the build that claimed the pool
@@ -195,12 +214,40 @@ impl<const N: usize> DynPool<N> {
         DynPool {
             mem: UnsafeCell::new(Mem([0; N])),
             claimed: AtomicBool::new(false),
+            last_code: AtomicU32::new(0),
+            last_entry: AtomicU32::new(0),
+            last_offset: AtomicU32::new(0),
         }
     }
 
     /// Size in bytes.
     pub const fn capacity(&self) -> usize {
         N
+    }
+
+    /// The refusal of the last build with this pool (`None` when it
+    /// succeeded or there was none yet).
+    pub fn last_error(&self) -> Option<BuildError> {
+        let code = self.last_code.load(Ordering::Acquire);
+        if code == CopKernel::Successful.code() {
+            return None;
+        }
+        let e = self.last_entry.load(Ordering::Acquire);
+        let entry = (e != 0).then(|| Blame {
+            index: (e >> 8) as u16,
+            sub: e as u8,
+            offset: self.last_offset.load(Ordering::Acquire),
+        });
+        Some(BuildError { code, entry })
+    }
+
+    pub(crate) fn set_last(&self, code: CopKernel, entry: Option<Blame>) {
+        let (e, off) = entry.map_or((0, 0), |b| {
+            ((u32::from(b.index) << 8) | u32::from(b.sub), b.offset)
+        });
+        self.last_entry.store(e, Ordering::Release);
+        self.last_offset.store(off, Ordering::Release);
+        self.last_code.store(code.code(), Ordering::Release);
     }
 
     /// True while a build uses the pool.
@@ -235,6 +282,7 @@ impl<const N: usize> DynPool<N> {
         image: Option<&'static [AtomicU8]>,
     ) -> Result<BuildInfo, CopKernel> {
         if stack.dynamic_od().is_some() {
+            self.set_last(CopKernel::NoFreeInstance, None);
             return Err(CopKernel::NoFreeInstance);
         }
         // The pool is claimed before the container is read, because the
@@ -247,13 +295,19 @@ impl<const N: usize> DynPool<N> {
             .claimed
             .compare_exchange(false, true, Ordering::AcqRel, Ordering::Acquire)
             .is_ok();
-        let r = self.plan_and_fill(claimed, stack, port, now, container, image);
+        let mut blame = None;
+        let r = self.plan_and_fill(claimed, stack, port, now, container, image, &mut blame);
         if r.is_err() && claimed {
             self.claimed.store(false, Ordering::Release);
+        }
+        match &r {
+            Ok(_) => self.set_last(CopKernel::Successful, None),
+            Err(e) => self.set_last(*e, blame),
         }
         r
     }
 
+    #[allow(clippy::too_many_arguments)]
     fn plan_and_fill(
         &'static self,
         claimed: bool,
@@ -262,6 +316,7 @@ impl<const N: usize> DynPool<N> {
         now: Ticks,
         container: &[u8],
         image: Option<&'static [AtomicU8]>,
+        blame: &mut Option<Blame>,
     ) -> Result<BuildInfo, CopKernel> {
         let image_len = image.map_or(0, <[AtomicU8]>::len);
         let plan = if claimed {
@@ -276,10 +331,10 @@ impl<const N: usize> DynPool<N> {
             // pool; the bytes before it are not referred to any more (the
             // slice above is not used again).
             let notes = unsafe { core::slice::from_raw_parts_mut(self.base(), N - c.index_len()) };
-            Plan::new_with_notes(c, stack.od(), image_len, notes)?
+            Plan::new_blamed(c, stack.od(), image_len, notes, blame)?
         } else {
             let c = Container::parse(container).map_err(|e| e.kernel())?;
-            Plan::new(c, stack.od(), image_len)?
+            Plan::new_blamed(c, stack.od(), image_len, &mut [], blame)?
         };
         let original = stack.od().part(Part::User);
         let layout = Layout::of(&plan, original.len()).ok_or(CopKernel::DynNoMemory)?;
@@ -299,7 +354,9 @@ impl<const N: usize> DynPool<N> {
         } else {
             plan
         };
-        self.fill(&plan, &layout, index_at, original, stack, port, now, image)
+        self.fill(
+            &plan, &layout, index_at, original, stack, port, now, image, blame,
+        )
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -313,6 +370,7 @@ impl<const N: usize> DynPool<N> {
         port: &mut impl CanPort,
         now: Ticks,
         image: Option<&'static [AtomicU8]>,
+        blame: &mut Option<Blame>,
     ) -> Result<BuildInfo, CopKernel> {
         // The pool is claimed by this build, so nothing else writes it; the
         // only references into it are the container's index and the plan's
@@ -450,7 +508,7 @@ impl<const N: usize> DynPool<N> {
         candidate
             .set_user_part(merged)
             .map_err(|_| CopKernel::DynInvalidConfig)?;
-        plan.check_pdos(&candidate)?;
+        plan.check_pdos_blamed(&candidate, blame)?;
 
         // The candidate is the stack's dictionary with the new user part,
         // already validated.
@@ -481,7 +539,7 @@ impl<const N: usize> DynPool<N> {
             );
             stack.reload_configuration(port, now);
         }
-        if let Err(e) = plan.apply(stack, snapshot, now) {
+        if let Err(e) = plan.apply_blamed(stack, snapshot, now, blame) {
             let _ = stack.od_mut().set_user_part(original);
             if pooled {
                 stack.pdo_mut().detach_pooled(port);
@@ -638,15 +696,18 @@ fn pool() -> Option<&'static DynPool<POOL_SIZE>> {
 /// kCopIllegalInstance (before `CcmInitCANopen`); kCopNoFreeInstance (a
 /// dynamic OD is already built: call `DynDestroyOd` first);
 /// kCopDynInvalidConfig (malformed or inconsistent container, a PDO
-/// without mapping object, variables sharing bytes of the image);
-/// kCopDynNoMemory (the tables do not fit `OBD_DYNAMIC_POOL_SIZE`, or a
-/// variable lies outside the process image); kCopCobIllegalCanId;
-/// kCopCobNoFreeEntry (PDO number beyond `PDO_MAX_RXPDO_IN_OBD` /
-/// `PDO_MAX_TXPDO_IN_OBD`); kCopCobAlreadyExist (two TPDOs with one
+/// without mapping object, variables sharing bytes of the image, a
+/// variable outside the input and output areas of the container's
+/// process-image parameters); kCopDynNoMemory (the tables do not fit
+/// `OBD_DYNAMIC_POOL_SIZE`, or a variable lies outside the process image);
+/// kCopCobIllegalCanId; kCopCobNoFreeEntry (PDO number beyond
+/// `PDO_MAX_RXPDO_IN_OBD` / `PDO_MAX_TXPDO_IN_OBD` when that is above 0;
+/// with 0 the PDOs come from the pool); kCopCobAlreadyExist (two TPDOs with one
 /// COB-ID); kCopObdIndexNotExist (an index that cannot be created:
 /// 0x0000-0x0FFF, 0xFFFF); kCopObdSubindexNotExist (a subindex an existing
 /// object does not have); kCopPdoErrorMapp; or the code of a value the
 /// dictionary refused (kCopObdValueLengthError, kCopObdValueToHigh, ...).
+/// `DynGetLastError` names the entry a refusal is about.
 ///
 /// # Safety
 /// `pbDcfSegCont_p` must point to a container readable for the size its
@@ -657,15 +718,21 @@ pub unsafe extern "C" fn DynBuildOd(
     pbDcfSegCont_p: *mut BYTE,
     pProcessImageDscrpt_p: *mut tProcessImageDscrpt,
 ) -> tCopKernel {
+    let refuse = |code: CopKernel| {
+        if let Some(p) = pool() {
+            p.set_last(code, None);
+        }
+        code.code()
+    };
     if pbDcfSegCont_p.is_null() {
-        return CopKernel::InvalidParam.code();
+        return refuse(CopKernel::InvalidParam);
     }
     // SAFETY: the caller provides at least the size field; read unaligned
     // because a BYTE array has no alignment.
     let head = unsafe { core::ptr::read_unaligned(pbDcfSegCont_p as *const [u8; 4]) };
     let size = u32::from_le_bytes(head);
     if (size as usize) < HEADER_SIZE || size > MAX_CONTAINER {
-        return CopKernel::DynInvalidConfig.code();
+        return refuse(CopKernel::DynInvalidConfig);
     }
     // SAFETY: the caller guarantees `size` readable bytes (the container
     // names its own size).
@@ -710,6 +777,54 @@ pub unsafe extern "C" fn DynBuildOd(
     };
     global::pump(|i, now| i.stack.drain(&mut i.port, now));
     code.code()
+}
+
+/// `DynGetLastError` (this library's extension, not part of the SYS TEC
+/// API): why the last `DynBuildOd` of the instance was refused. Writes the
+/// index, subindex and byte offset (from the container's start) of the
+/// container entry the refusal is about, and the code `DynBuildOd`
+/// returned; index, subindex and offset are 0 when the refusal concerns
+/// the container or the pool as a whole (header, sizes, memory, a second
+/// build), and the code is kCopSuccessful after a build that succeeded or
+/// before the first. Each pointer may be NULL (that value is not written).
+///
+/// Returns kCopSuccessful; kCopIllegalInstance when the instance has no
+/// pool.
+///
+/// # Safety
+/// Each non-NULL pointer must be valid for writing its type.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn DynGetLastError(
+    pwIndex_p: *mut WORD,
+    pbSubIndex_p: *mut BYTE,
+    pdwOffset_p: *mut DWORD,
+    pCode_p: *mut tCopKernel,
+) -> tCopKernel {
+    let Some(pool) = pool() else {
+        return CopKernel::IllegalInstance.code();
+    };
+    let (code, entry) = match pool.last_error() {
+        Some(e) => (e.code, e.entry),
+        None => (CopKernel::Successful.code(), None),
+    };
+    let (index, sub, offset) = entry.map_or((0, 0, 0), |b| (b.index, b.sub, b.offset));
+    // SAFETY: each pointer is checked for NULL; the caller guarantees the
+    // others are writable.
+    unsafe {
+        if !pwIndex_p.is_null() {
+            pwIndex_p.write_unaligned(index);
+        }
+        if !pbSubIndex_p.is_null() {
+            pbSubIndex_p.write(sub);
+        }
+        if !pdwOffset_p.is_null() {
+            pdwOffset_p.write_unaligned(offset);
+        }
+        if !pCode_p.is_null() {
+            pCode_p.write_unaligned(code);
+        }
+    }
+    CopKernel::Successful.code()
 }
 
 /// `DynDestroyOd`: removes the dynamic OD and resets the PDO module (seed

@@ -197,6 +197,21 @@ pub struct PiParams {
 }
 
 impl PiParams {
+    /// True when `len` bytes at `at` lie within the image's size and
+    /// entirely inside the input or the output area.
+    pub fn covers(&self, at: u32, len: usize) -> bool {
+        let Ok(len) = u32::try_from(len) else {
+            return false;
+        };
+        let Some(end) = at.checked_add(len) else {
+            return false;
+        };
+        let inside = |o: u32, s: u32| at >= o && o.checked_add(s).is_some_and(|e| end <= e);
+        end <= self.total
+            && (inside(self.input_offset, self.input_size)
+                || inside(self.output_offset, self.output_size))
+    }
+
     fn consistent(&self) -> bool {
         let fits = |o: u32, s: u32| o.checked_add(s).is_some_and(|end| end <= self.total);
         fits(self.input_offset, self.input_size) && fits(self.output_offset, self.output_size)

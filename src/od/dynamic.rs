@@ -42,6 +42,12 @@
 //! after them ([`super::dcf::PiLayout`]). Strings, domains and everything
 //! without a place live in the pool. A variable outside the image is
 //! `kCopDynNoMemory`; two variables sharing bytes `kCopDynInvalidConfig`.
+//! With a parameter segment, a variable must lie within the image size it
+//! names and inside its input or its output area
+//! ([`super::dcf::PiParams::covers`]; `kCopDynInvalidConfig` otherwise).
+//! Which of the two is not checked: containers of other tools place RPDO
+//! data of 0xA480.. in the input area and TPDO data of 0xA000.. in the
+//! output area, the other way round from seed table 2.
 //!
 //! # PDOs (seed Bild 2, chapter 3)
 //! A PDO the container touches is reconfigured as a unit, whatever order
@@ -116,6 +122,50 @@ use crate::port::Ticks;
 use crate::wire::pdo::{COB_INVALID, check_identifier};
 
 pub use crate::ffi::dynod::DynPool;
+
+/// The container entry a refused build is about (`DynGetLastError`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Blame {
+    /// Index of the entry.
+    pub index: u16,
+    /// Subindex of the entry.
+    pub sub: u8,
+    /// Byte offset of the entry (its index field) from the container's
+    /// start.
+    pub offset: u32,
+}
+
+/// Bytes before an entry's value: index, subindex, length.
+const ENTRY_HEAD: usize = 7;
+
+impl Blame {
+    /// Entry `e` of container `c`.
+    pub fn of(c: &Container<'_>, e: &Entry<'_>) -> Blame {
+        // The value is a slice of the container: its distance from the
+        // start, less the entry's head, is the entry's offset.
+        let at = (e.data.as_ptr() as usize)
+            .wrapping_sub(c.bytes().as_ptr() as usize)
+            .saturating_sub(ENTRY_HEAD);
+        Blame {
+            index: e.index,
+            sub: e.sub,
+            offset: u32::try_from(at).unwrap_or(u32::MAX),
+        }
+    }
+
+    /// The last entry of `index`/`sub` in `c` (the one whose value counts).
+    pub fn at(c: &Container<'_>, index: u16, sub: u8) -> Option<Blame> {
+        c.entries_in(index, index)
+            .filter(|e| e.sub == sub)
+            .last()
+            .map(|e| Blame::of(c, &e))
+    }
+
+    /// The first entry of `index` in `c`.
+    pub fn first_of(c: &Container<'_>, index: u16) -> Option<Blame> {
+        c.entries_in(index, index).next().map(|e| Blame::of(c, &e))
+    }
+}
 
 /// Where a new variable lives.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -404,7 +454,7 @@ impl<'a> Plan<'a> {
         od: &ObjectDictionary,
         image_len: usize,
     ) -> Result<Self, CopKernel> {
-        Self::make(c, od, image_len, &mut [])
+        Self::make(c, od, image_len, &mut [], &mut None)
     }
 
     /// [`Plan::new`] for a container with an index
@@ -419,7 +469,21 @@ impl<'a> Plan<'a> {
         image_len: usize,
         scratch: &'a mut [u8],
     ) -> Result<Self, CopKernel> {
-        Self::make(c, od, image_len, scratch)
+        Self::make(c, od, image_len, scratch, &mut None)
+    }
+
+    /// [`Plan::new_with_notes`] (empty `scratch`: [`Plan::new`]) that names
+    /// the entry a refusal is about in `blame` (`None`: the container as a
+    /// whole).
+    pub fn new_blamed(
+        c: Container<'a>,
+        od: &ObjectDictionary,
+        image_len: usize,
+        scratch: &'a mut [u8],
+        blame: &mut Option<Blame>,
+    ) -> Result<Self, CopKernel> {
+        *blame = None;
+        Self::make(c, od, image_len, scratch, blame)
     }
 
     /// Bytes the notes take at the end of the scratch given to
@@ -433,6 +497,7 @@ impl<'a> Plan<'a> {
         od: &ObjectDictionary,
         image_len: usize,
         scratch: &'a mut [u8],
+        blame: &mut Option<Blame>,
     ) -> Result<Self, CopKernel> {
         let notes: &'a mut [u8] = match scratch.len().checked_sub(c.len()) {
             Some(start) if c.is_indexed() => scratch.get_mut(start..).unwrap_or_default(),
@@ -501,86 +566,93 @@ impl<'a> Plan<'a> {
         // several times).
         let mut found: Option<(u16, u8, super::Object)> = None;
         for e in c.entries() {
-            if !index_allowed(e.index) {
-                return Err(CopKernel::ObdIndexNotExist);
-            }
-            let note = notes.get_mut(e.position as usize);
-            let exists = match known {
-                [Some((i, x)), _] | [_, Some((i, x))] if i == e.index => x,
-                _ => p.exists(e.index),
-            };
-            if known[0].is_none_or(|(i, _)| i != e.index) {
-                known = [Some((e.index, exists)), known[0]];
-            }
-            if exists {
-                let obj = match found {
-                    Some((i, s, o)) if i == e.index && s == e.sub => o,
-                    _ => od
-                        .find(e.index, e.sub)
-                        .map_err(|_| CopKernel::ObdSubindexNotExist)?,
-                };
-                found = Some((e.index, e.sub, obj));
-                let writable = obj.access().writable() && !describes_structure(e.index, e.sub);
-                if (e.index, e.sub) == (ERROR_FIELD, 0) {
-                    check_error_field_count(od, e.data)?;
+            let r = (|| -> Result<(), CopKernel> {
+                if !index_allowed(e.index) {
+                    return Err(CopKernel::ObdIndexNotExist);
                 }
-                if writable {
-                    od.stage(&obj, ByteOrder::Wire, e.data)
-                        .map_err(|err| err.kernel)?;
-                    if !is_pdo_param(e.index) {
-                        match obj.native_size() {
-                            Ok(size) => plain_bytes += RECORD_HEADER + size,
-                            Err(err) => {
-                                plain_err.get_or_insert(err.kernel);
+                let note = notes.get_mut(e.position as usize);
+                let exists = match known {
+                    [Some((i, x)), _] | [_, Some((i, x))] if i == e.index => x,
+                    _ => p.exists(e.index),
+                };
+                if known[0].is_none_or(|(i, _)| i != e.index) {
+                    known = [Some((e.index, exists)), known[0]];
+                }
+                if exists {
+                    let obj = match found {
+                        Some((i, s, o)) if i == e.index && s == e.sub => o,
+                        _ => od
+                            .find(e.index, e.sub)
+                            .map_err(|_| CopKernel::ObdSubindexNotExist)?,
+                    };
+                    found = Some((e.index, e.sub, obj));
+                    let writable = obj.access().writable() && !describes_structure(e.index, e.sub);
+                    if (e.index, e.sub) == (ERROR_FIELD, 0) {
+                        check_error_field_count(od, e.data)?;
+                    }
+                    if writable {
+                        od.stage(&obj, ByteOrder::Wire, e.data)
+                            .map_err(|err| err.kernel)?;
+                        if !is_pdo_param(e.index) {
+                            match obj.native_size() {
+                                Ok(size) => plain_bytes += RECORD_HEADER + size,
+                                Err(err) => {
+                                    plain_err.get_or_insert((err.kernel, Blame::of(&c, &e)));
+                                }
                             }
                         }
                     }
+                    if let Some(n) = note {
+                        *n = match (writable, is_pdo_param(e.index)) {
+                            (false, _) => NOTE_EXISTS,
+                            (true, true) => NOTE_EXISTS | NOTE_WRITES,
+                            (true, false) => NOTE_EXISTS | NOTE_WRITES | NOTE_PLAIN,
+                        };
+                    }
+                    return Ok(());
                 }
                 if let Some(n) = note {
-                    *n = match (writable, is_pdo_param(e.index)) {
-                        (false, _) => NOTE_EXISTS,
-                        (true, true) => NOTE_EXISTS | NOTE_WRITES,
-                        (true, false) => NOTE_EXISTS | NOTE_WRITES | NOTE_PLAIN,
-                    };
+                    *n = 0;
                 }
-                continue;
-            }
-            if let Some(n) = note {
-                *n = 0;
-            }
-            let earlier;
-            let first = if c.is_indexed() && c.is_first_occurrence(&e) {
-                &e
-            } else {
-                earlier = c.first_occurrence(&e);
-                &earlier
-            };
-            let d = p.describe(first, &e)?;
-            if first.position != e.position {
-                // A repeated entry of a new object must agree with the first.
-                if first.data.len() != e.data.len() || first.attr != e.attr {
-                    return Err(CopKernel::DynInvalidConfig);
+                let earlier;
+                let first = if c.is_indexed() && c.is_first_occurrence(&e) {
+                    &e
+                } else {
+                    earlier = c.first_occurrence(&e);
+                    &earlier
+                };
+                let d = p.describe(first, &e)?;
+                if first.position != e.position {
+                    // A repeated entry of a new object must agree with the first.
+                    if first.data.len() != e.data.len() || first.attr != e.attr {
+                        return Err(CopKernel::DynInvalidConfig);
+                    }
+                    return Ok(());
                 }
-                continue;
-            }
-            p.new_subs += 1;
-            if d.place == Place::Pool {
-                p.data_bytes += d.storage_len();
-            }
-            if c.is_first_of_index(&e) {
-                p.new_indices += 1;
-                // `Subindices::lacks_count` (the object has entry `e`).
-                let synth = usize::from(!c.has_sub_zero(&e));
-                // More than 255 subindices need as many entries.
-                if c.len() >= usize::from(u8::MAX)
-                    && c.subindices(e.index).distinct + synth > usize::from(u8::MAX)
-                {
-                    return Err(CopKernel::DynInvalidConfig);
+                p.new_subs += 1;
+                if d.place == Place::Pool {
+                    p.data_bytes += d.storage_len();
                 }
-                if synth == 1 {
-                    p.new_subs += 1;
-                    p.data_bytes += 1;
+                if c.is_first_of_index(&e) {
+                    p.new_indices += 1;
+                    // `Subindices::lacks_count` (the object has entry `e`).
+                    let synth = usize::from(!c.has_sub_zero(&e));
+                    // More than 255 subindices need as many entries.
+                    if c.len() >= usize::from(u8::MAX)
+                        && c.subindices(e.index).distinct + synth > usize::from(u8::MAX)
+                    {
+                        return Err(CopKernel::DynInvalidConfig);
+                    }
+                    if synth == 1 {
+                        p.new_subs += 1;
+                        p.data_bytes += 1;
+                    }
                 }
+                Ok(())
+            })();
+            if let Err(err) = r {
+                *blame = Some(Blame::of(&c, &e));
+                return Err(err);
             }
         }
         p.notes = notes;
@@ -592,14 +664,18 @@ impl<'a> Plan<'a> {
         let mut n = plain_bytes;
         while let Some(w) = seq.next(&p, od) {
             if seq.step > Step::Plain {
-                if let Some(err) = plain_err.take() {
+                if let Some((err, b)) = plain_err.take() {
+                    *blame = Some(b);
                     return Err(err);
                 }
             }
+            *blame = Blame::at(&p.c, w.index, w.sub);
             let obj = od.find(w.index, w.sub).map_err(|e| e.kernel)?;
             n += RECORD_HEADER + obj.native_size().map_err(|e| e.kernel)?;
         }
-        if let Some(err) = plain_err {
+        *blame = None;
+        if let Some((err, b)) = plain_err {
+            *blame = Some(b);
             return Err(err);
         }
         p.snapshot_bytes = n;
@@ -736,6 +812,9 @@ impl<'a> Plan<'a> {
         if end > self.image_len {
             return Err(CopKernel::DynNoMemory);
         }
+        if self.c.pi_params().is_some() && !self.pi.covers(at, size) {
+            return Err(CopKernel::DynInvalidConfig);
+        }
         Ok(Place::Image(at))
     }
 
@@ -816,7 +895,18 @@ impl<'a> Plan<'a> {
     /// Checks the final state of every PDO the container touches against
     /// `candidate`, the dictionary with the new user part (module docs).
     pub fn check_pdos(&self, candidate: &ObjectDictionary) -> Result<(), CopKernel> {
+        self.check_pdos_blamed(candidate, &mut None)
+    }
+
+    /// [`Plan::check_pdos`] naming in `blame` the first entry of the PDO
+    /// that is refused.
+    pub fn check_pdos_blamed(
+        &self,
+        candidate: &ObjectDictionary,
+        blame: &mut Option<Blame>,
+    ) -> Result<(), CopKernel> {
         for p in self.touched_pdos() {
+            *blame = Blame::first_of(&self.c, p.commu()).or(Blame::first_of(&self.c, p.mapp()));
             let (commu, mapp) = (p.commu(), p.mapp());
             if candidate.find_entry(commu).is_none() || candidate.find_entry(mapp).is_none() {
                 return Err(CopKernel::DynInvalidConfig);
@@ -862,6 +952,7 @@ impl<'a> Plan<'a> {
             )
             .map_err(|_| CopKernel::PdoErrorMapp)?;
         }
+        *blame = None;
         Ok(())
     }
 
@@ -904,6 +995,17 @@ impl<'a> Plan<'a> {
         snapshot: &mut [u8],
         now: Ticks,
     ) -> Result<(), CopKernel> {
+        self.apply_blamed(stack, snapshot, now, &mut None)
+    }
+
+    /// [`Plan::apply`] naming in `blame` the entry whose write was refused.
+    pub fn apply_blamed(
+        &self,
+        stack: &mut Stack,
+        snapshot: &mut [u8],
+        now: Ticks,
+        blame: &mut Option<Blame>,
+    ) -> Result<(), CopKernel> {
         // One record per write, in sequence order, except for the writes
         // known to repeat an object: one written twice otherwise is
         // recorded twice with the same value (nothing is written yet),
@@ -922,6 +1024,7 @@ impl<'a> Plan<'a> {
         let mut result = Ok(());
         while let Some(w) = seq.next(self, stack.od()) {
             if let Err(e) = write_one(stack, records, w, now) {
+                *blame = Blame::at(&self.c, w.index, w.sub);
                 result = Err(e);
                 break;
             }

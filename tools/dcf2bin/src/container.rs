@@ -7,7 +7,7 @@ use std::mem::{align_of, size_of};
 
 use cop::CopKernel;
 use cop::od::dcf::{
-    self, Container, EntrySpec, NOT_PLACED, PiArea, PiLayout, PiParams, attr, index_scratch_len,
+    self, Container, EntrySpec, NOT_PLACED, PiLayout, PiParams, attr, index_scratch_len,
 };
 use cop::od::dynamic::Plan;
 use cop::od::{ObdEntry, ObdSubEntry, ObjectDictionary};
@@ -164,24 +164,22 @@ pub fn verify(bytes: &[u8]) -> Result<Verified, String> {
                 "0x{:04X} sub {} at offset {at} ({size} bytes)",
                 e.index, e.sub
             );
-            let window = match dcf::rule_offset(e.index, e.sub).map(|r| r.0) {
-                Some(PiArea::Input) => Some(("input", pi.input_offset, pi.input_size)),
-                Some(PiArea::Output) => Some(("output", pi.output_offset, pi.output_size)),
-                None => None,
-            };
             if end > pi.total {
                 return Err(format!(
                     "{what} ends after the process image of {} bytes the parameter segment reports",
                     pi.total
                 ));
             }
-            if let Some((name, off, len)) = window {
-                if at < off || end > off + len {
-                    return Err(format!(
-                        "{what} lies outside the {name} area {off}..{} the parameter segment reports",
-                        off + len
-                    ));
-                }
+            // As DynBuildOd: inside the input or the output area, whichever
+            // (tools differ in which area they give RPDO and TPDO data).
+            if !pi.covers(at, size) {
+                return Err(format!(
+                    "{what} lies in neither the input area {}..{} nor the output area {}..{} the parameter segment reports",
+                    pi.input_offset,
+                    pi.input_offset + pi.input_size,
+                    pi.output_offset,
+                    pi.output_offset + pi.output_size
+                ));
             }
             spans.push((at, end, e.index, e.sub));
             placed += 1;
@@ -227,16 +225,43 @@ pub struct PoolNeed {
     /// Build-time index and notes (linear build; without room for them
     /// the build is quadratic, same result).
     pub scratch_bytes: usize,
+    /// PDO channels the build takes from the pool on this build of the
+    /// library (its `PDO_MAX_RXPDO_IN_OBD` / `PDO_MAX_TXPDO_IN_OBD` 0).
+    pub pooled_channels: usize,
+    /// PDO channels the container needs from the pool on a node whose
+    /// obdcfg.h counts 0 RPDOs and 0 TPDOs: highest RPDO number + 1 plus
+    /// highest TPDO number + 1 of its entries.
+    pub container_channels: usize,
+    /// Bytes of one PDO channel on this host (`cop::pdo::channel_size`);
+    /// on 32-bit targets it is smaller (narrower pointers), so figures
+    /// with it are upper bounds there.
+    pub channel_bytes: usize,
 }
+
+/// Alignment of the PDO channels in the pool (at most 8).
+const CHANNEL_ALIGN: usize = 8;
 
 impl PoolNeed {
     fn end(&self, entry: usize, sub: usize, sub_align: usize) -> usize {
+        self.end_with(entry, sub, sub_align, self.pooled_channels)
+    }
+
+    fn end_with(&self, entry: usize, sub: usize, sub_align: usize, channels: usize) -> usize {
         let tables = (self.user_entries + self.new_indices) * entry;
-        tables.div_ceil(sub_align) * sub_align
-            + self.new_subs * sub
-            + self.data_bytes
-            + self.snapshot_bytes
-            + self.copy_bytes
+        let subs_end = tables.div_ceil(sub_align) * sub_align + self.new_subs * sub;
+        let chan_end = if channels == 0 {
+            subs_end
+        } else {
+            subs_end.div_ceil(CHANNEL_ALIGN) * CHANNEL_ALIGN + channels * self.channel_bytes
+        };
+        chan_end + self.data_bytes + self.snapshot_bytes + self.copy_bytes
+    }
+
+    /// [`PoolNeed::target32`] on a node whose obdcfg.h counts 0 RPDOs and
+    /// 0 TPDOs, so that the container's PDOs take their state from the
+    /// pool (an upper bound: the channel size is this host's).
+    pub fn target32_pdos_from_pool(&self) -> usize {
+        self.end_with(16, 16, 4, self.container_channels)
     }
 
     /// Smallest pool on a 32-bit target (TMS570, Cortex-M/R: `tObdEntry`
@@ -272,6 +297,14 @@ pub fn pool_need(
     let c = Container::parse(bytes).map_err(|e| e.kernel())?;
     let plan = Plan::new(c, od, image_len)?;
     let seg = c.index_segment().len();
+    let highest = |from: u16, to: u16| {
+        c.entries_in(from, to)
+            .map(|e| usize::from(e.index - from) % 0x200 + 1)
+            .max()
+            .unwrap_or(0)
+    };
+    let rx = highest(0x1400, 0x17FF);
+    let tx = highest(0x1800, 0x1BFF);
     Ok(PoolNeed {
         new_indices: plan.new_indices,
         new_subs: plan.new_subs,
@@ -281,6 +314,9 @@ pub fn pool_need(
         copy_bytes: seg,
         scratch_bytes: index_scratch_len(c.len(), seg, c.has_addresses()).unwrap_or(usize::MAX)
             + c.len(),
+        pooled_channels: plan.rx_channels + plan.tx_channels,
+        container_channels: rx + tx,
+        channel_bytes: cop::pdo::channel_size(),
     })
 }
 

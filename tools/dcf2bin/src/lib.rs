@@ -40,7 +40,8 @@
 //!   without `CANopenSafetySupported=1`), and a number without value
 //!   (written as 0).
 //! * Left out with a note ([`WarningKind::LeftOut`], also with `--strict`):
-//!   objects whose write is a command, not a configuration ([`is_command_object`]).
+//!   objects whose write is a command, not a configuration ([`is_command_object`]),
+//!   and subindices of 0x1003 / 0x1010 / 0x1011 without value ([`describes_device`]).
 //!
 //! # Limits
 //! `LowLimit`/`HighLimit` are checked here, at conversion time: the
@@ -223,27 +224,33 @@ pub struct Dcf {
 
 /// Objects whose write is a command, not a configuration: the container
 /// leaves them out (an EDS describes them with the value they read).
-/// * 0x1003 pre-defined error field: the history is read-only; writing 0
-///   to subindex 0 clears it (CiA 301 7.5.2.4).
-/// * 0x1010 store parameters, 0x1011 restore default parameters: reading
-///   gives the capability (1: "saves on command"), writing the signature
-///   `save`/`load` triggers the action (CiA 301 7.5.2.13/14).
 /// * 0x1023 OS command, 0x1F25 configure slave, 0x1F51 program control:
 ///   writing starts an action (CiA 301, CiA 302).
+///
+/// 0x1003 (pre-defined error field) and 0x1010 / 0x1011 (store / restore
+/// capabilities) describe the device: `DynBuildOd` checks their entries
+/// and writes nothing (`cop::od::dynamic::describes_structure`), so they
+/// go into the container with the values the file gives; a subindex of
+/// them without value is left out ([`describes_device`]).
 pub fn is_command_object(index: u16) -> Option<&'static str> {
     Some(match index {
-        0x1003 => {
-            "0x1003 (pre-defined error field) is the error history: read-only, and writing 0 to subindex 0 clears it (CiA 301 7.5.2.4)"
-        }
-        0x1010 => {
-            "0x1010 (store parameters) reads the storage capability; writing `save` stores (CiA 301 7.5.2.13): a command"
-        }
-        0x1011 => {
-            "0x1011 (restore default parameters) reads the capability; writing `load` restores (CiA 301 7.5.2.14): a command"
-        }
         0x1023 => "0x1023 (OS command): writing executes a command (CiA 301)",
         0x1F25 => "0x1F25 (configure slave): writing starts a configuration (CiA 302)",
         0x1F51 => "0x1F51 (program control): writing starts or stops a program (CiA 302-3)",
+        _ => return None,
+    })
+}
+
+/// Objects whose entries describe the device (see [`is_command_object`]):
+/// a subindex without value is left out with a note instead of carrying 0.
+pub fn describes_device(index: u16) -> Option<&'static str> {
+    Some(match index {
+        0x1003 => {
+            "0x1003 (pre-defined error field) without value: left out (its entries describe the device's error history; DynBuildOd checks them, writes nothing)"
+        }
+        0x1010 | 0x1011 => {
+            "0x1010 / 0x1011 (store / restore capability) without value: left out (DynBuildOd checks them, writes nothing)"
+        }
         _ => return None,
     })
 }
@@ -494,6 +501,10 @@ impl<'a> Reader<'a> {
             return Ok(None);
         }
         if no_value {
+            if let Some(why) = describes_device(index) {
+                self.warn(WarningKind::LeftOut, sec, None, why)?;
+                return Ok(None);
+            }
             self.warn(
                 WarningKind::Tolerated,
                 &value_sec,

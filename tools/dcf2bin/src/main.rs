@@ -186,6 +186,14 @@ fn pool_line(dcf: &Dcf, bytes: &[u8]) -> String {
                 n.target32_linear(),
                 n.host()
             );
+            if n.container_channels > 0 {
+                s.push_str(&format!(
+                    "; on a node whose obdcfg.h counts 0 RPDOs and 0 TPDOs (the container's {} PDO channels from the pool, at most {} bytes each): at most {} bytes on 32-bit targets",
+                    n.container_channels,
+                    n.channel_bytes,
+                    n.target32_pdos_from_pool()
+                ));
+            }
             if image > 0 {
                 if let Ok(w) = pool_need_alone(bytes, 0) {
                     s.push_str(&format!(
@@ -229,8 +237,10 @@ fn run_verify(a: &Args) -> Result<bool, String> {
 fn pool_line_of(bytes: &[u8]) -> String {
     match pool_need_alone(bytes, 0) {
         Ok(n) => format!(
-            "pool (OBD_DYNAMIC_POOL_SIZE) on a node without any of these objects and without process image: {} bytes on 32-bit targets",
-            n.target32()
+            "pool (OBD_DYNAMIC_POOL_SIZE) on a node without any of these objects and without process image: {} bytes on 32-bit targets; at most {} when its obdcfg.h counts 0 RPDOs and 0 TPDOs ({} PDO channels from the pool)",
+            n.target32(),
+            n.target32_pdos_from_pool(),
+            n.container_channels
         ),
         Err(e) => format!(
             "DynBuildOd refuses it on any node: {}",

@@ -82,10 +82,12 @@ fn process_image_windows_must_cover_the_variables() {
         ),
         "{err}"
     );
-    // An output placed in the input window.
+    // A WORD on the 1-byte input area: in neither area.
     let err = verify(&container(&e, Some(&[0, 0]), Some(&good))).unwrap_err();
     assert!(
-        err.contains("0xA580 sub 3 at offset 0 (2 bytes) lies outside the output area 8..14"),
+        err.contains(
+            "0xA580 sub 3 at offset 0 (2 bytes) lies in neither the input area 0..1 nor the output area 8..14"
+        ),
         "{err}"
     );
     // Without parameter segment the rule's layout is what DynBuildOd
@@ -184,4 +186,33 @@ fn a_subindex_written_twice_keeps_the_last_value() {
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("(kCopDynInvalidConfig)"));
     let _ = std::fs::remove_dir_all(dir);
+}
+
+/// The pool figure for a node whose obdcfg.h counts 0 PDOs: the PDOs of
+/// the container (here RPDO 1 and TPDO 2: 1 + 2 channels) add their state
+/// to the tables, after the subindex tables aligned to 8 bytes.
+#[test]
+fn pool_figure_counts_the_pdo_channels_of_the_container() {
+    let spec = |index, sub, data: &'static [u8]| EntrySpec {
+        index,
+        sub,
+        data,
+        attr: attr::READ | attr::WRITE | attr::NUMERIC,
+    };
+    let e = [
+        spec(0x1400, 1, &[0x01, 0x02, 0, 0x80]),
+        spec(0x1600, 0, &[0]),
+        spec(0x1801, 1, &[0x82, 0x02, 0, 0x80]),
+        spec(0x1A01, 0, &[0]),
+    ];
+    let c = container(&e, None, None);
+    let n = dcf2bin::container::pool_need_alone(&c, 0).unwrap();
+    assert_eq!(n.container_channels, 3);
+    assert_eq!(n.channel_bytes, cop::pdo::channel_size());
+    // This library's own build counts 8 PDOs: none from the pool.
+    assert_eq!(n.pooled_channels, 0);
+    let without = n.target32();
+    let with = n.target32_pdos_from_pool();
+    assert!(with >= without + 3 * n.channel_bytes, "{with} {without}");
+    assert!(with < without + 3 * n.channel_bytes + 8, "{with} {without}");
 }

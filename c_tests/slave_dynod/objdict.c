@@ -1,0 +1,4 @@
+/*
+ * objdict.c - the slave's static dictionary (objdict.h) through objdef.h.
+ */
+#include "objdef.h"
