@@ -540,7 +540,6 @@ impl Stack {
         self.emcy.poll(port, now);
     }
 
-    #[inline(never)] // its frame stays out of poll_work (worst-case stack, docs/tms570.md)
     fn on_frame(&mut self, port: &mut impl CanPort, rx: &RxFrame, now: Ticks) {
         if !self.connected || self.state == NmtState::Initialisation {
             return;
