@@ -223,7 +223,7 @@ static void Boot (void)
     Rpdo.m_wPdoCommuIndex = 0x1400;
     Rpdo.m_bPdoType = kPdoTypeRecv;
     Rpdo.m_bNodeID = ID_S;
-    Rpdo.m_dwCanId = 0x180;                     /* m_bNodeID is added */
+    Rpdo.m_dwCanId = 0x180 + ID_S;              /* the full identifier: kept as it is */
     Rpdo.m_bTxTyp = 0xFE;
     Rpdo.m_bNrOfEntries = 1;
     Rpdo.m_adwMappParam[0] = 0x20600108;
