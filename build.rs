@@ -334,7 +334,7 @@ fn check(c: &Config) {
 /// headers and objdef.h references it, so a mismatch fails to link.
 fn abi_symbol(c: &Config) -> String {
     format!(
-        "CopLibAbi_os{}_gr{}_sm{}_pm{}_ts{}_id{}_pe{}",
+        "CopLibAbi_os{}_gr{}_sm{}_pm{}_ts{}_id{}_pe{}_ch{}",
         [1, 2, 4][c.obj_size as usize],
         c.srdo_granularity,
         u8::from(c.srdo_static_mapping),
@@ -342,6 +342,7 @@ fn abi_symbol(c: &Config) -> String {
         u8::from(c.cdrv_timestamp),
         if c.cdrv_can20b { 29 } else { 11 },
         c.pdo_max_mappentries,
+        if c.cob_more_than_128_entries { 16 } else { 8 },
     )
 }
 

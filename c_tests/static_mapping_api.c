@@ -13,7 +13,7 @@ struct tSignatureName { int COP_ABI_SIGNATURE; };
 int SignatureName (struct tSignatureName* p);
 int SignatureName (struct tSignatureName* p)
 {
-    return p->CopLibAbi_os2_gr8_sm1_pm1_ts0_id29_pe8;
+    return p->CopLibAbi_os2_gr8_sm1_pm1_ts0_id29_pe8_ch8;
 }
 
 static BYTE abNormal_g[8];

@@ -29,6 +29,7 @@
 #include "cob.h"
 #include "nmtm.h"
 #include "obdcfg.h"              /* COB_MAX_RX_COB_ENTRIES, as such applications include it */
+#include "cop_config.h"
 #include "test_util.h"
 
 #define SIM_M 0
@@ -37,6 +38,15 @@
 #define ID_S  3
 
 tCopKernel PUBLIC ObdInitRamMaster (void MEM* pInitParam_p);
+
+/* The link-time signature names the COB handle width (ch16 with
+ * COB_MORE_THAN_128_ENTRIES): the member access compiles only when
+ * COP_ABI_SIGNATURE expands to exactly this name. */
+struct tSignatureName { int COP_ABI_SIGNATURE; };
+static int SignatureName (const struct tSignatureName* p)
+{
+    return p->CopLibAbi_os4_gr8_sm0_pm0_ts0_id11_pe8_ch16;
+}
 
 /* ---- the application's callbacks ------------------------------------------- */
 
@@ -223,7 +233,7 @@ static void Boot (void)
     Rpdo.m_wPdoCommuIndex = 0x1400;
     Rpdo.m_bPdoType = kPdoTypeRecv;
     Rpdo.m_bNodeID = ID_S;
-    Rpdo.m_dwCanId = 0x180;                     /* m_bNodeID is added */
+    Rpdo.m_dwCanId = 0x180 + ID_S;              /* the full identifier: kept as it is */
     Rpdo.m_bTxTyp = 0xFE;
     Rpdo.m_bNrOfEntries = 1;
     Rpdo.m_adwMappParam[0] = 0x20600108;
@@ -449,6 +459,10 @@ static void ProcessData (void)
 
 int main (void)
 {
+    struct tSignatureName Name;
+
+    Name.COP_ABI_SIGNATURE = 1;
+    CHECK_EQ(SignatureName(&Name), 1);
     SimReset();
     Boot();
     ReadSlave();

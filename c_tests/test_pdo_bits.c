@@ -51,9 +51,9 @@ struct tSignatureName { int COP_ABI_SIGNATURE; };
 static int SignatureName (const struct tSignatureName* p)
 {
 #if (PDO_MAX_MAPPENTRIES == 64)
-    return p->CopLibAbi_os1_gr8_sm0_pm0_ts0_id11_pe64;
+    return p->CopLibAbi_os1_gr8_sm0_pm0_ts0_id11_pe64_ch8;
 #else
-    return p->CopLibAbi_os1_gr8_sm0_pm0_ts0_id11_pe8;
+    return p->CopLibAbi_os1_gr8_sm0_pm0_ts0_id11_pe8_ch8;
 #endif
 }
 

@@ -3,11 +3,12 @@
  *
  * Some switches of copcfg.h change the binary interface between the
  * application and the library: the width of tObdSize, the size of
- * tSrdoMappParam, the layout of tCdrvMsg, the size of tPdoParam. The library is built from the same
+ * tSrdoMappParam, the layout of tCdrvMsg, the size of tPdoParam, the width
+ * of tCobHdl in tCobParam. The library is built from the same
  * copcfg.h (COP_CONFIG_DIR) and exports exactly one byte whose name encodes
  * those switches:
  *
- *   CopLibAbi_os<1|2|4>_gr<8|16|32|64>_sm<0|1>_pm<0|1>_ts<0|1>_id<11|29>_pe<8|64>
+ *   CopLibAbi_os<1|2|4>_gr<8|16|32|64>_sm<0|1>_pm<0|1>_ts<0|1>_id<11|29>_pe<8|64>_ch<8|16>
  *
  *   os  sizeof(tObdSize)            (OBD_SUPPORTED_OBJ_SIZE)
  *   gr  SRDO_GRANULARITY            (SRDO_MAX_MAPPENTRIES = 128 / gr)
@@ -17,6 +18,7 @@
  *   id  CDRV_CAN_SPEC               (tCanId WORD or DWORD)
  *   pe  PDO_MAX_MAPPENTRIES         (tPdoParam.m_adwMappParam; 64 with
  *                                   PDO_USE_BIT_MAPPING and PDO_GRANULARITY 64)
+ *   ch  COB_MORE_THAN_128_ENTRIES   (tCobHdl BYTE or WORD, CcmCobGetParam)
  *
  * This header builds the same name from the application's configuration.
  * objdef.h stores its address in tObdRamParam.m_pbAbiSignature, so an
@@ -79,14 +81,21 @@
 #define COP_ABI_PE_ pe8
 #endif
 
+#if (COB_MORE_THAN_128_ENTRIES != FALSE)
+#define COP_ABI_CH_ ch16
+#else
+#define COP_ABI_CH_ ch8
+#endif
+
 /* Two levels so that the arguments are expanded before pasting. */
-#define COP_ABI_NAME_PASTE_(os, gr, sm, pm, ts, id, pe) \
-    CopLibAbi_##os##_##gr##_##sm##_##pm##_##ts##_##id##_##pe
-#define COP_ABI_NAME_(os, gr, sm, pm, ts, id, pe) COP_ABI_NAME_PASTE_(os, gr, sm, pm, ts, id, pe)
+#define COP_ABI_NAME_PASTE_(os, gr, sm, pm, ts, id, pe, ch) \
+    CopLibAbi_##os##_##gr##_##sm##_##pm##_##ts##_##id##_##pe##_##ch
+#define COP_ABI_NAME_(os, gr, sm, pm, ts, id, pe, ch) COP_ABI_NAME_PASTE_(os, gr, sm, pm, ts, id, pe, ch)
 
 /* The signature symbol of this configuration (defined by the library). */
 #define COP_ABI_SIGNATURE \
-    COP_ABI_NAME_(COP_ABI_OS_, COP_ABI_GR_, COP_ABI_SM_, COP_ABI_PM_, COP_ABI_TS_, COP_ABI_ID_, COP_ABI_PE_)
+    COP_ABI_NAME_(COP_ABI_OS_, COP_ABI_GR_, COP_ABI_SM_, COP_ABI_PM_, COP_ABI_TS_, COP_ABI_ID_, COP_ABI_PE_, \
+                  COP_ABI_CH_)
 
 #ifdef __cplusplus
 extern "C" {

@@ -286,9 +286,13 @@ impl Stack {
     }
 }
 
-/// `m_bNodeID` is added to the identifier bits; the flag bits stay.
+/// `m_bNodeID` is added to the identifier bits of a base identifier (its
+/// node-ID bits 0..6 are 0, as 0x180 in the predefined connection set);
+/// an identifier that already carries a node-ID (0x181 with node 1, as
+/// master applications fill their PDO tables) is used as it is. The flag
+/// bits stay.
 fn add_node_id(cob: u32, node: u8) -> u32 {
-    if node == 0 {
+    if node == 0 || cob & 0x7F != 0 {
         return cob;
     }
     let mask = if cob & COB_EXTENDED != 0 {
@@ -310,5 +314,8 @@ mod tests {
         assert_eq!(add_node_id(0x8000_0180, 5), 0x8000_0185);
         assert_eq!(add_node_id(0x4000_0200, 0x7F), 0x4000_027F);
         assert_eq!(add_node_id(0x2000_1000, 1), 0x2000_1001);
+        // Already the full identifier: kept.
+        assert_eq!(add_node_id(0x181, 1), 0x181);
+        assert_eq!(add_node_id(0x4000_0283, 3), 0x4000_0283);
     }
 }

@@ -195,7 +195,8 @@ pub fn pdo_param(p: &tPdoParam) -> Result<PdoParam<'_>, CopKernel> {
 /// parameters through the dictionary in the CiA 301 order (PDO invalid,
 /// communication parameters, mapping, COB-ID last), so the same rules as
 /// for an SDO download apply; `m_bNodeID` is added to the identifier of
-/// `m_dwCanId`. Entries before a failing one stay defined; the failing PDO
+/// `m_dwCanId` when its node-ID bits (0..6) are 0 (a base such as 0x180);
+/// a full identifier (0x181 with node 1) is used as it is. Entries before a failing one stay defined; the failing PDO
 /// stays invalid.
 ///
 /// Returns kCopSuccessful; kCopInvalidParam (NULL table, `m_bPdoType`
