@@ -253,8 +253,10 @@ ARMGCC=$(arm-none-eabi-gcc --version | head -1)
 COMMIT=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 DIRTY=$(git status --porcelain --untracked-files=no 2>/dev/null | grep -q . && echo " (with uncommitted changes)" || true)
 
-if [ $JSON = 1 ]; then
-    # text_safety_node / text_io_node: not measured by this script (null).
+# The figures as one JSON object: in $WORK/figures.json after every run,
+# on stdout instead of the report with --json. text_safety_node and
+# text_io_node are not measured by this script (null).
+{
     printf '{"capi_srdo_pair_pm_on": %s, "capi_srdo_pair_pm_off": %s, "capi_srdo_pair_pm_on_64": %s, ' \
         "${CRX[on,1]}" "${CRX[off,1]}" "${CRX[on,64]}"
     printf '"capi_state_handshake": %s, "capi_idle_process": %s, "capi_send_srdo": %s, ' \
@@ -262,6 +264,9 @@ if [ $JSON = 1 ]; then
     printf '"rust_srdo_pair_pm_on": %s, "rust_srdo_pair_pm_off": %s, ' "${RX[on,1]}" "${RX[off,1]}"
     printf '"code_srdo_gfc_crc_arm_z": %s, "code_srdo_gfc_crc_thumb_z": %s, ' "${CODE[arm-z]}" "${CODE[thumb-z]}"
     printf '"text_safety_node": null, "text_io_node": null, "ram_per_srdo_dynamic": %s}\n' "$PER_SRDO"
+} >"$WORK/figures.json"
+if [ $JSON = 1 ]; then
+    cat "$WORK/figures.json"
     log "done"
     exit 0
 fi
