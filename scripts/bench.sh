@@ -4,6 +4,7 @@
 #
 #   scripts/bench.sh                         measure and print the report
 #   scripts/bench.sh > docs/benchmarks.md    what docs/benchmarks.md is
+#   scripts/bench.sh --json                  the figures as one JSON object
 #
 # The report (Markdown) goes to stdout, build and progress messages to
 # stderr. The script fails only when a measurement fails (a build, a
@@ -16,6 +17,9 @@
 #   `#[inline(never)] fn measure_*`. callgrind counts only inside it
 #   (--collect-atstart=no --toggle-collect); the figure per call is
 #   (Ir(2N) - Ir(N)) / N, so set-up and one-time costs cancel.
+# * bench/capi is a C program linked against libcop.a as a C application
+#   links it (its own copcfg.h / obdcfg.h / objdict.h, a C driver, the
+#   App* callbacks); its measured regions are C functions `measure_*`.
 # * Code sizes: scripts/tms570.sh builds and links the TMS570 image in
 #   four variants (ARM / Thumb-2 x opt-level s / z);
 #   scripts/tms570/code_size.py attributes the code to source files.
@@ -24,6 +28,12 @@
 set -euo pipefail
 shopt -s inherit_errexit
 cd "$(dirname "$0")/.."
+JSON=0
+case "${1:-}" in
+    --json) JSON=1 ;;
+    "") ;;
+    *) printf 'usage: scripts/bench.sh [--json]\n' >&2; exit 2 ;;
+esac
 ROOT=$(pwd)
 export PATH="$HOME/.cargo/bin:$PATH"
 export CARGO_TERM_COLOR=never
@@ -49,13 +59,16 @@ BIN_PM=$(host_build progmon)
 BIN_NOPM=$(host_build no-progmon --no-default-features)
 
 # Ir inside `measure_<fn>` for one run: ir <binary> <fn> <args...>
+# (bench/capi binaries: C functions without the crate prefix).
 ir() {
-    local bin=$1 fn=$2 out
+    local bin=$1 fn=$2 out sym
     shift 2
     out=$WORK/callgrind.$$.out
+    sym="cop_bench::measure_$fn"
+    case "$bin" in */capi-*) sym="measure_$fn" ;; esac
     rm -f "$out"
     valgrind --tool=callgrind --callgrind-out-file="$out" --collect-atstart=no \
-        --toggle-collect="cop_bench::measure_$fn" "$bin" "$@" >/dev/null 2>"$WORK/valgrind.log" ||
+        --toggle-collect="$sym" "$bin" "$@" >/dev/null 2>"$WORK/valgrind.log" ||
         { cat "$WORK/valgrind.log" >&2; die "cop-bench $*"; }
     awk '/^summary:/ {print $2; found=1} END {if (!found) exit 1}' "$out" ||
         die "no callgrind summary for cop-bench $*"
@@ -119,6 +132,36 @@ flat() { # spread of RX[$1,*] from 1 to 64 in percent
 }
 FLAT_ON=$(flat on)
 FLAT_OFF=$(flat off)
+
+# ------------------------------------------------------------------ C API
+# libcop.a with bench/capi/cfg (program monitor on) or cfg_nopm (off), the
+# C program compiled for 1, 8, 32 and 64 receive SRDOs.
+capi_build() { # $1 = on | off
+    local cfg=cfg dir=$OUT/bench-capi-$1 n
+    [ "$1" = off ] && cfg=cfg_nopm
+    log "C API build (program monitor $1)"
+    COP_CONFIG_DIR=$ROOT/bench/capi/$cfg CARGO_TARGET_DIR=$dir \
+        cargo build -q --release --features std --lib >&2 || die "libcop.a (bench/capi/$cfg)"
+    for n in 1 8 32 64; do
+        gcc -O2 -Wall -Wextra -Werror -DBENCH_SRDOS=$n -DCOP_HOST_SIMULATION -Iinclude \
+            -Ibench/capi/$cfg -Ibench/capi bench/capi/capi.c bench/capi/objdict.c \
+            "$dir/release/libcop.a" -lpthread -ldl -lm -o "$WORK/capi-$1-$n" || die "bench/capi ($1, $n)"
+    done
+}
+declare -A CRX CIDLE
+for pm in on off; do
+    capi_build $pm
+    log "C API cycles (program monitor $pm)"
+    for n in 1 8 32 64; do
+        CIDLE[$pm,$n]=$(per_call "$WORK/capi-$pm-$n" cycle $CYCLES idle)
+        CRX[$pm,$n]=$(minus "$(per_call "$WORK/capi-$pm-$n" cycle $CYCLES rx)" "${CIDLE[$pm,$n]}")
+    done
+done
+CHANDSHAKE=$(per_call "$WORK/capi-off-8" handshake $CYCLES handshake)
+CSEND=$(per_call "$WORK/capi-off-8" send $CYCLES send)
+cflat() { awk -v a="${CRX[$1,1]}" -v b="${CRX[$1,64]}" 'BEGIN {printf "%+.1f\n", (b - a) * 100 / a}'; }
+CFLAT_ON=$(cflat on)
+CFLAT_OFF=$(cflat off)
 
 log "CRC"
 CRC=$(per_call "$BIN_PM" crc $CRCS srdo-crc16)
@@ -210,6 +253,24 @@ ARMGCC=$(arm-none-eabi-gcc --version | head -1)
 COMMIT=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 DIRTY=$(git status --porcelain --untracked-files=no 2>/dev/null | grep -q . && echo " (with uncommitted changes)" || true)
 
+# The figures as one JSON object: in $WORK/figures.json after every run,
+# on stdout instead of the report with --json. text_safety_node and
+# text_io_node are not measured by this script (null).
+{
+    printf '{"capi_srdo_pair_pm_on": %s, "capi_srdo_pair_pm_off": %s, "capi_srdo_pair_pm_on_64": %s, ' \
+        "${CRX[on,1]}" "${CRX[off,1]}" "${CRX[on,64]}"
+    printf '"capi_state_handshake": %s, "capi_idle_process": %s, "capi_send_srdo": %s, ' \
+        "$CHANDSHAKE" "${CIDLE[off,8]}" "$CSEND"
+    printf '"rust_srdo_pair_pm_on": %s, "rust_srdo_pair_pm_off": %s, ' "${RX[on,1]}" "${RX[off,1]}"
+    printf '"code_srdo_gfc_crc_arm_z": %s, "code_srdo_gfc_crc_thumb_z": %s, ' "${CODE[arm-z]}" "${CODE[thumb-z]}"
+    printf '"text_safety_node": null, "text_io_node": null, "ram_per_srdo_dynamic": %s}\n' "$PER_SRDO"
+} >"$WORK/figures.json"
+if [ $JSON = 1 ]; then
+    cat "$WORK/figures.json"
+    log "done"
+    exit 0
+fi
+
 cat <<EOF
 # Benchmarks
 
@@ -225,6 +286,12 @@ not times); sizes and RAM are those of the TMS570 build
 
 | figure | target | measured | verdict |
 |---|---|---|---|
+| C API: received SRDO pair through \`CcmProcess\`, C driver and \`AppSrdoEvent\` with the handshake, 1 SRDO (program monitor off / on) | ≤ 300 / ≤ 350 | $(fmt "${CRX[off,1]}") / $(fmt "${CRX[on,1]}") | $(verdict "${CRX[off,1]}" 300) / $(verdict "${CRX[on,1]}" 350) |
+| C API pair with 1, 8, 32, 64 configured SRDOs (program monitor on) | flat (≤ +10 %) | $(fmt "${CRX[on,1]}") / $(fmt "${CRX[on,8]}") / $(fmt "${CRX[on,32]}") / $(fmt "${CRX[on,64]}") ($CFLAT_ON %) | $(awk -v f="$CFLAT_ON" 'BEGIN {print (f <= 10 ? "met" : "MISSED")}') |
+| the same, program monitor off | flat | $(fmt "${CRX[off,1]}") / $(fmt "${CRX[off,8]}") / $(fmt "${CRX[off,32]}") / $(fmt "${CRX[off,64]}") ($CFLAT_OFF %) | $(awk -v f="$CFLAT_OFF" 'BEGIN {print (f <= 10 ? "met" : "MISSED")}') |
+| C API: \`CcmGetSrdoState\` + \`CcmSetSrdoState\` | ≤ 40 | $(fmt "$CHANDSHAKE") | $(verdict "$CHANDSHAKE" 40) |
+| C API: idle \`CcmProcess\`, 8 SRDOs, heartbeat producer, SDO server, 4 PDOs (program monitor off) | ≤ 120 | $(fmt "${CIDLE[off,8]}") | $(verdict "${CIDLE[off,8]}" 120) |
+| C API: \`CcmSendSrdo\`, one transmit SRDO (4 × UNSIGNED8), both \`CdrvWriteMsg\` | ≤ 250 | $(fmt "$CSEND") | $(verdict "$CSEND" 250) |
 | instructions per valid received SRDO pair, 4 mapped bytes (program monitor on / off) | ≤ 300 | $(fmt "${RX[on,1]}") / $(fmt "${RX[off,1]}") | $(verdict "${RX[on,1]}" 300) / $(verdict "${RX[off,1]}" 300) |
 | the same with 1, 8, 32, 64 configured SRDOs (program monitor on) | flat (≤ +10 % from 1 to 64) | $(fmt "${RX[on,1]}") / $(fmt "${RX[on,8]}") / $(fmt "${RX[on,32]}") / $(fmt "${RX[on,64]}") ($FLAT_ON %) | $(awk -v f="$FLAT_ON" 'BEGIN {print (f <= 10 ? "met" : "MISSED")}') |
 | the same, program monitor off | flat | $(fmt "${RX[off,1]}") / $(fmt "${RX[off,8]}") / $(fmt "${RX[off,32]}") / $(fmt "${RX[off,64]}") ($FLAT_OFF %) | $(awk -v f="$FLAT_OFF" 'BEGIN {print (f <= 10 ? "met" : "MISSED")}') |
@@ -240,6 +307,22 @@ not times); sizes and RAM are those of the TMS570 build
 | RAM of the whole stack with 8 SRDOs | report | $(fmt "${SIZE[8,STACK]}") B (\`Stack\`); C API instance $(fmt "${SIZE[8,INSTANCE]}") B; image .data + .bss $(fmt "$DATA8") + $(fmt "$BSS8") B | reported |
 
 ## What each row measures
+
+* **C API rows** (bench/capi): a C program linked against libcop.a (built
+  with bench/capi/cfg or cfg_nopm) as a C application links it, with an
+  objdict.h dictionary (bench/capi/objdict.h: n receive SRDOs of four
+  UNSIGNED8 entries each, normal / inverted / normal / inverted, 2 data
+  bytes per frame; a transmit SRDO after them; heartbeat producer 60 s,
+  SDO server, two receive and two transmit PDOs), a C driver (a ring of
+  received frames handed out by \`CdrvReadMsg\` / \`CdrvReleaseMsg\`, a
+  counter behind \`CdrvWriteMsg\`) and the manual's \`AppSrdoEvent\`
+  (\`CcmGetSrdoState\`, checks bits 4-5, \`CcmSetSrdoState\` with bits
+  4-5 set). Pair = \`CcmProcess\` that reads both frames of the last
+  SRDO minus an idle \`CcmProcess\` of the same node; the driver's and
+  the callback's instructions are included. Handshake: the two calls from
+  the main loop. Send: \`CcmSendSrdo\` of the transmit SRDO (node with 8
+  receive SRDOs, program monitor off). Each run checks one event per pair,
+  the mapped variables, no \`AppSrdoError\` and two frames per send.
 
 * **Received SRDO pair**: one \`CcmProcess\` cycle (\`Stack::process\`) of a node
   with n running receive SRDOs that takes the normal and the inverted frame
@@ -344,4 +427,10 @@ for n in 1 8 32 64; do
     echo "| received pair minus idle cycle, $n SRDO$([ $n = 1 ] || echo s) | $(fmt "${RX[on,$n]}") | $(fmt "${RX[off,$n]}") |"
 done
 echo "| idle cycle, SDO node | $(fmt "$SDO_IDLE") | |"
+for n in 1 8 32 64; do
+    echo "| C API: idle \`CcmProcess\`, $n receive SRDO$([ $n = 1 ] || echo s) | $(fmt "${CIDLE[on,$n]}") | $(fmt "${CIDLE[off,$n]}") |"
+done
+for n in 1 8 32 64; do
+    echo "| C API: received pair minus idle, $n SRDO$([ $n = 1 ] || echo s) | $(fmt "${CRX[on,$n]}") | $(fmt "${CRX[off,$n]}") |"
+done
 log "done"

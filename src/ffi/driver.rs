@@ -117,11 +117,16 @@ impl CanPort for CdrvPort {
             CanId::std_masked(m.m_CanId as u16)
         };
         let len = m.m_bSize.min(8);
-        let mut frame = CanFrame::new(id, m.m_bData.get(..usize::from(len)).unwrap_or(&[]));
-        frame.rtr = m.m_MsgType & msg_type::RTR != 0;
-        if frame.rtr {
-            frame.len = m.m_bSize.min(8);
-        }
+        // The payload as one 8-byte word with the bytes at `len..` zeroed
+        // (what `CanFrame::new` makes of the first `len` bytes), without a
+        // copy of variable length.
+        let keep = u64::MAX.checked_shr(64 - 8 * u32::from(len)).unwrap_or(0);
+        let frame = CanFrame {
+            id,
+            rtr: m.m_MsgType & msg_type::RTR != 0,
+            len,
+            data: (u64::from_le_bytes(m.m_bData) & keep).to_le_bytes(),
+        };
         #[cfg(cdrv_timestamp)]
         let time = Ticks(m.m_Time);
         #[cfg(not(cdrv_timestamp))]
