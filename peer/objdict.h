@@ -34,6 +34,19 @@ OBD_BEGIN ()
             OBD_SUBINDEX_ROM_VSTRING(0x100A, 0x00, kObdAccR, Manufacturer_Software_Version, DEFINED_STRING_VERSION)
         OBD_END_INDEX(0x100A)
 
+        // 0x1010 store parameters (0: nothing is saved until a storage driver
+        // is in use), 0x1011 restore default parameters
+        OBD_BEGIN_INDEX_RAM(0x1010, 0x03, CcmCbStore)
+            OBD_SUBINDEX_ROM_VAR(0x1010, 0x00, kObdTypUInt8, kObdAccCR, tObdUnsigned8, Largest_Subindex, 0x02)
+            OBD_SUBINDEX_RAM_VAR(0x1010, 0x01, kObdTypUInt32, kObdAccRW, tObdUnsigned32, Save_All, 0x00000000)
+            OBD_SUBINDEX_RAM_VAR(0x1010, 0x02, kObdTypUInt32, kObdAccRW, tObdUnsigned32, Save_Communication, 0x00000000)
+        OBD_END_INDEX(0x1010)
+        OBD_BEGIN_INDEX_RAM(0x1011, 0x03, CcmCbRestore)
+            OBD_SUBINDEX_ROM_VAR(0x1011, 0x00, kObdTypUInt8, kObdAccCR, tObdUnsigned8, Largest_Subindex, 0x02)
+            OBD_SUBINDEX_RAM_VAR(0x1011, 0x01, kObdTypUInt32, kObdAccRW, tObdUnsigned32, Restore_All, 0x00000001)
+            OBD_SUBINDEX_RAM_VAR(0x1011, 0x02, kObdTypUInt32, kObdAccRW, tObdUnsigned32, Restore_Communication, 0x00000001)
+        OBD_END_INDEX(0x1011)
+
         // 0x1014 COB-ID EMCY (0x80 stands for 0x80 + node-ID)
         OBD_BEGIN_INDEX_RAM(0x1014, 0x01, EmcpCbConfigEmergencyId)
             OBD_SUBINDEX_RAM_VAR(0x1014, 0x00, kObdTypUInt32, kObdAccSRW, tObdUnsigned32, COB_ID_EMCY, 0x80)

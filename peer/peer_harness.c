@@ -7,6 +7,7 @@
 
 #include "cdrv_sim.h"
 #include "peer_harness.h"
+#include "store_sim.h"
 
 /* abPeerDynodContainer_l: peer/peer_dynod.dcf as a container (dcf2bin) */
 #include "peer_dynod_container.h"
@@ -94,10 +95,31 @@ int PeerTakeEvent (BYTE* pbKind_p, BYTE* pbNode_p, WORD* pwIndex_p, DWORD* pdwCo
 
 /* ---- callbacks of the application ----------------------------------------------------- */
 
+static tCopKernel PeerInitStoreResult_g = kCopCcmStoreHwError;
+
+/* As the SYS TEC slave: CcmInitStore at EnterInitialising, and on. */
 static tCopKernel PUBLIC PeerNmtCallback (tNmtEvent NmtEvent_p)
 {
     PeerLog(PEER_EV_NMT, 0, 0, (DWORD) NmtEvent_p);
+    if (NmtEvent_p == kNmtEvEnterInitialising)
+    {
+        PeerInitStoreResult_g = CcmInitStore();
+    }
     return kCopSuccessful;
+}
+
+DWORD PeerStoreUse (int fOn_p)
+{
+    if (!fOn_p)
+    {
+        SimStoreReset();
+    }
+    return (DWORD) CcmSetStoreDriver(fOn_p ? SimStoreDriver() : NULL);
+}
+
+DWORD PeerInitStoreResult (void)
+{
+    return (DWORD) PeerInitStoreResult_g;
 }
 
 static tCopKernel PUBLIC PeerHbcCallback (BYTE bNodeId_p, tNmtErrCtrlEvent HbcEvent_p)

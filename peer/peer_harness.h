@@ -35,6 +35,14 @@ DWORD PeerShutdown (void);                  /* CcmShutDownCANopen */
 DWORD PeerProcess (void);                   /* CcmProcess */
 DWORD PeerStackVersion (void);              /* CopGetStackVersion */
 
+/* Store / restore: fOn_p 1 registers the simulated memory of
+ * examples_c/sim/store_sim.h (CcmSetStoreDriver; it keeps its contents over
+ * PeerInit), 0 unregisters it and erases it. The NMT callback calls
+ * CcmInitStore at EnterInitialising; PeerInitStoreResult is what it
+ * returned last. */
+DWORD PeerStoreUse (int fOn_p);
+DWORD PeerInitStoreResult (void);
+
 /* ---- bus and clock ---------------------------------------------------------- */
 
 void  PeerAdvanceTicks (DWORD dwTicks_p);

@@ -798,7 +798,7 @@ fn power_cycle(net: &mut Net, nv: &'static SimNvram, key: u32) -> Result<(), Cop
 #[test]
 fn saved_parameters_come_back_after_a_power_cycle() {
     let mut net = Net::new();
-    let nv = SimNvram::leaked(4096, 4);
+    let nv = SimNvram::leaked(8192, 4);
     assert_eq!(with_storage(&mut net, nv, 7), Ok(()));
     // CiA 301 7.5.2.13: bit 0 "saves parameters on command".
     assert_eq!(net.a.read(0x1010, 1), 1);
@@ -831,7 +831,7 @@ fn saved_parameters_come_back_after_a_power_cycle() {
 #[test]
 fn save_while_operational_and_bad_signatures_are_refused() {
     let mut net = Net::new();
-    let nv = SimNvram::leaked(4096, 4);
+    let nv = SimNvram::leaked(8192, 4);
     with_storage(&mut net, nv, 7).unwrap();
     net.a.command(NmtCommand::StartRemoteNode);
     assert_eq!(
@@ -864,7 +864,7 @@ fn save_while_operational_and_bad_signatures_are_refused() {
 #[test]
 fn load_removes_the_selected_part_from_the_image() {
     let mut net = Net::new();
-    let nv = SimNvram::leaked(4096, 4);
+    let nv = SimNvram::leaked(8192, 4);
     with_storage(&mut net, nv, 7).unwrap();
     net.a.write(0x1017, 0, 500, 2).unwrap();
     net.a.write(0x2000, 0, 0x55, 1).unwrap();
@@ -894,7 +894,7 @@ fn load_removes_the_selected_part_from_the_image() {
 #[test]
 fn an_image_of_another_configuration_is_ignored() {
     let mut net = Net::new();
-    let nv = SimNvram::leaked(4096, 4);
+    let nv = SimNvram::leaked(8192, 4);
     with_storage(&mut net, nv, 7).unwrap();
     net.a.write(0x2000, 0, 0x55, 1).unwrap();
     net.a
@@ -922,7 +922,7 @@ fn an_image_of_another_configuration_is_ignored() {
 #[test]
 fn a_power_cut_during_a_save_keeps_the_old_parameters() {
     let mut net = Net::new();
-    let nv = SimNvram::leaked(4096, 4);
+    let nv = SimNvram::leaked(8192, 4);
     with_storage(&mut net, nv, 7).unwrap();
     net.a.write(0x2000, 0, 0x01, 1).unwrap();
     net.a

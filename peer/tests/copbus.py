@@ -117,6 +117,8 @@ class PeerLibrary:
             "PeerDynBuildOd": (c.c_uint32, [u32p]),
             "PeerDynDestroyOd": (c.c_uint32, []),
             "PeerDynContainerSize": (c.c_uint32, []),
+            "PeerStoreUse": (c.c_uint32, [c.c_int]),
+            "PeerInitStoreResult": (c.c_uint32, []),
         }
         for name, (res, args) in sig.items():
             f = getattr(self.lib, name)
@@ -207,6 +209,14 @@ class PeerLibrary:
     def shutdown(self):
         with self.lock:
             self.lib.PeerShutdown()
+
+    def store_use(self, on):
+        """Registers (True) or removes and erases (False) the simulated memory."""
+        self._check("PeerStoreUse", 1 if on else 0)
+
+    def init_store_result(self):
+        """What CcmInitStore returned in the last start-up."""
+        return self.lib.PeerInitStoreResult()
 
     def stack_version(self):
         return self.lib.PeerStackVersion()
