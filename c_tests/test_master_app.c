@@ -211,7 +211,10 @@ static tSdocState Sdo (WORD wIndex_p, BYTE bSub_p, void* pData_p, tObdSize Size_
 
 static void Boot (void)
 {
-    static CONST BYTE abSlaves[1] = { ID_S };
+    /* the application's node table, in RAM, defined before the slaves are
+     * known and filled later (entries 0 are free) as master applications
+     * of the SYS TEC API do: the library reads it again when it changes */
+    static BYTE abSlaves[4];
     static CONST BYTE abBootup[1] = { 0x00 };   /* CiA 301 7.2.8.3.3 */
     static CONST BYTE abStart[2] = { 0x01, ID_S };
     tSdocParam Client;
@@ -224,8 +227,11 @@ static void Boot (void)
     CHECK_RET(CcmInitNmtmEx(AppCbNmtmEvent), kCopSuccessful);
     CHECK_RET(CcmInitHbcEx(AppCbHbcEvent), kCopSuccessful);
     CHECK_RET(CcmInitEmccEx(AppCbEmccEvent), kCopSuccessful);
-    CHECK_RET(CcmEmccDefineProducerTab(abSlaves, 1), kCopSuccessful);
-    CHECK_RET(CcmDefineSlaveTab(abSlaves, 1), kCopSuccessful);
+    COP_MEMSET(abSlaves, 0, sizeof(abSlaves));
+    CHECK_RET(CcmEmccDefineProducerTab(abSlaves, sizeof(abSlaves)), kCopSuccessful);
+    CHECK_RET(CcmDefineSlaveTab(abSlaves, sizeof(abSlaves)), kCopSuccessful);
+    CHECK_RET(CcmNmtmGetSlaveInfo(ID_S, &Info), kCopNmtmSlaveEntryNotExist);
+    abSlaves[0] = ID_S;                         /* the slave is added */
 
     /* the RPDO that receives the slave's TPDO1 (predefined set 0x180 + 3) */
     COP_MEMSET(&Rpdo, 0, sizeof(Rpdo));

@@ -59,6 +59,12 @@ impl Stack {
         self.emcc.define_producers(nodes, self.node_id, port)
     }
 
+    /// True when `nodes` lists the emergency producers already defined
+    /// (entries 0 skipped).
+    pub fn emcc_producers_are(&self, nodes: &[u8]) -> bool {
+        self.emcc.same_producers(nodes)
+    }
+
     // ------------------------------------------------------------------
     // Pre-defined error field
     // ------------------------------------------------------------------

@@ -117,6 +117,13 @@ impl EmcyConsumer {
         result
     }
 
+    /// True when the used entries of `nodes` (node-IDs other than 0), in
+    /// their order, are the listed producers.
+    pub fn same_producers(&self, nodes: &[u8]) -> bool {
+        let listed = self.producers.iter().copied().filter(|n| *n != 0);
+        listed.eq(nodes.iter().copied().filter(|n| *n != 0))
+    }
+
     /// Offers a received frame; `true` when it was an emergency of a
     /// listed producer (queued as [`Event::Emcc`]). The caller applies the
     /// NMT state rule.

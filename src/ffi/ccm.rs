@@ -119,6 +119,7 @@ fn init(p: &tCcmInitParam) -> CopResult {
             srdo: srdo_callbacks,
             ..Callbacks::default()
         },
+        tables: Default::default(),
     })
 }
 
@@ -151,7 +152,10 @@ pub extern "C" fn CcmConnectToNet() -> tCopKernel {
 /// also been told through `AppSrdoError` itself).
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmProcess() -> tCopKernel {
-    let r = global::with(|i| i.stack.begin_cycle());
+    let r = global::with(|i| {
+        super::master::AppTables::sync(i);
+        i.stack.begin_cycle()
+    });
     if r.is_err() {
         return code(r.map(|()| Ok(())));
     }

@@ -28,6 +28,8 @@ pub struct Instance {
     pub port: CdrvPort,
     /// The application's callbacks.
     pub callbacks: Callbacks,
+    /// The master application's node tables (read again when they change).
+    pub tables: super::master::AppTables,
 }
 
 pub use super::MAX_INSTANCES;
@@ -253,6 +255,7 @@ mod tests {
             stack: Stack::new(crate::testod::dictionary(), node).unwrap(),
             port: CdrvPort,
             callbacks: Callbacks::default(),
+            tables: Default::default(),
         }
     }
 

@@ -13,6 +13,73 @@ use crate::error::CopKernel;
 use crate::port::Clock;
 use crate::wire::nmt::NmtCs;
 
+/// The node tables of a master application, kept as the application gave
+/// them: `CcmDefineSlaveTab` and `CcmEmccDefineProducerTab` take the
+/// address of an application array (`BYTE GENERIC*`) that the SYS TEC
+/// master applications fill later, slave by slave, after the call (entries
+/// 0 are free). The tables are read again before each `CcmProcess`,
+/// `CcmConfigLgm`, `CcmTriggerNodeGuard` and `CcmNmtmGetSlaveInfo`; a table whose
+/// used entries changed is defined again (nodes listed before keep their
+/// state). A changed table that is refused (an invalid or repeated
+/// node-ID, too many entries) leaves the previous list in force and is
+/// tried again while it differs.
+#[derive(Clone, Copy)]
+pub struct AppTables {
+    slaves: *const BYTE,
+    slave_count: u8,
+    producers: *const BYTE,
+    producer_count: u8,
+}
+
+impl Default for AppTables {
+    fn default() -> Self {
+        AppTables {
+            slaves: core::ptr::null(),
+            slave_count: 0,
+            producers: core::ptr::null(),
+            producer_count: 0,
+        }
+    }
+}
+
+impl AppTables {
+    /// Defines the tables again whose used entries changed since.
+    pub fn sync(i: &mut Instance) {
+        let t = i.tables;
+        if t.slave_count != 0 {
+            // SAFETY: CcmDefineSlaveTab's contract: the table stays valid
+            // for `bNumOfSlaves_p` bytes while it is defined (until the next
+            // CcmDefineSlaveTab or CcmShutDownCANopen), as in the original,
+            // which keeps the pointer.
+            if let Ok(nodes) = unsafe { ptr::slice_or_empty(t.slaves, usize::from(t.slave_count)) }
+            {
+                if !i.stack.nmtm().same_slaves(nodes) {
+                    let _ = i.stack.nmtm_mut().define_slaves(nodes);
+                }
+            }
+        }
+        if t.producer_count != 0 {
+            // SAFETY: CcmEmccDefineProducerTab's contract, as above.
+            if let Ok(nodes) =
+                unsafe { ptr::slice_or_empty(t.producers, usize::from(t.producer_count)) }
+            {
+                if !i.stack.emcc_producers_are(nodes) {
+                    let Instance { stack, port, .. } = i;
+                    let _ = stack.define_emcc_producers(port, nodes);
+                }
+            }
+        }
+    }
+}
+
+/// [`global::with`] after the application's tables were read again.
+fn with_tables<R>(f: impl FnOnce(&mut Instance) -> R) -> Result<R, CopKernel> {
+    global::with(|i| {
+        AppTables::sync(i);
+        f(i)
+    })
+}
+
 /// `CcmInitEmcc`: enables the emergency consumer without an application
 /// callback (any registered by `CcmInitEmccEx` is dropped): emergencies of
 /// the listed producers are received and not reported. Returns
@@ -48,7 +115,9 @@ pub extern "C" fn CcmInitEmccEx(pfnCallback_p: tAppEmccEventCallback) -> tCopKer
 /// (a node twice), or the driver's code from `CdrvDefineCanId`.
 ///
 /// # Safety
-/// `pbProducerTab_p` must be valid for `bNumOfProducer_p` bytes.
+/// `pbProducerTab_p` must be valid for `bNumOfProducer_p` bytes, and stay
+/// valid while the table is defined ([`AppTables`]: it is read again when
+/// the application changes it).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmEmccDefineProducerTab(
     pbProducerTab_p: *const BYTE,
@@ -58,8 +127,16 @@ pub unsafe extern "C" fn CcmEmccDefineProducerTab(
     let nodes =
         c_try!(unsafe { ptr::slice_or_empty(pbProducerTab_p, usize::from(bNumOfProducer_p)) });
     code(global::with(|i| {
-        let Instance { stack, port, .. } = i;
-        stack.define_emcc_producers(port, nodes)
+        let Instance {
+            stack,
+            port,
+            tables,
+            ..
+        } = i;
+        stack.define_emcc_producers(port, nodes)?;
+        tables.producers = pbProducerTab_p;
+        tables.producer_count = bNumOfProducer_p;
+        Ok(())
     }))
 }
 
@@ -88,7 +165,9 @@ pub extern "C" fn CcmInitNmtmEx(pfnCallback_p: tAppNmtmEventCallback) -> tCopKer
 /// kCopNmtmInvalidSlaveNodeId, kCopNmtmSlaveNodeExist.
 ///
 /// # Safety
-/// `pbSlaveTab_p` must be valid for `bNumOfSlaves_p` bytes.
+/// `pbSlaveTab_p` must be valid for `bNumOfSlaves_p` bytes, and stay valid
+/// while the table is defined ([`AppTables`]: it is read again when the
+/// application changes it).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmDefineSlaveTab(
     pbSlaveTab_p: *const BYTE,
@@ -96,7 +175,12 @@ pub unsafe extern "C" fn CcmDefineSlaveTab(
 ) -> tCopKernel {
     // SAFETY: the caller's contract (bNumOfSlaves_p entries).
     let nodes = c_try!(unsafe { ptr::slice_or_empty(pbSlaveTab_p, usize::from(bNumOfSlaves_p)) });
-    code(global::with(|i| i.stack.nmtm_mut().define_slaves(nodes)))
+    code(global::with(|i| {
+        i.stack.nmtm_mut().define_slaves(nodes)?;
+        i.tables.slaves = pbSlaveTab_p;
+        i.tables.slave_count = bNumOfSlaves_p;
+        Ok(())
+    }))
 }
 
 /// `CcmSendNmtCommand`: NMT module control to a node (0 = all nodes; the
@@ -128,7 +212,7 @@ pub extern "C" fn CcmBootNetwork() -> tCopKernel {
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmTriggerNodeGuard(bNodeId_p: BYTE) -> tCopKernel {
     let now = TgtClock.now();
-    code(global::with(|i| {
+    code(with_tables(|i| {
         let Instance { stack, port, .. } = i;
         stack.nmtm_mut().trigger_guard(port, bNodeId_p, now)
     }))
@@ -147,7 +231,7 @@ pub unsafe extern "C" fn CcmConfigLgm(
     // SAFETY: the caller's contract (NULL or a valid tNmtmSlaveParam).
     let p = c_try!(unsafe { ptr::read(pSlaveParam_p) });
     let now = TgtClock.now();
-    code(global::with(|i| {
+    code(with_tables(|i| {
         i.stack.nmtm_mut().configure_guarding(
             bNodeId_p,
             p.m_wLifeguardTime,
@@ -172,7 +256,7 @@ pub unsafe extern "C" fn CcmNmtmGetSlaveInfo(
 ) -> tCopKernel {
     // SAFETY: the caller's contract (NULL or a writable tNmtmSlaveInfo).
     let out = c_try!(unsafe { ptr::out(pSlaveInfo_p) });
-    let r = global::with(|i| i.stack.nmtm_mut().read_slave_info(bNodeId_p));
+    let r = with_tables(|i| i.stack.nmtm_mut().read_slave_info(bNodeId_p));
     match r {
         Ok(Ok(info)) => {
             out.set(tNmtmSlaveInfo {
@@ -369,6 +453,7 @@ pub unsafe extern "C" fn CcmSdocStartTransfer(
             stack,
             port,
             callbacks,
+            ..
         } = i;
         stack.sdo_client_start(port, now, p.m_wClientIndex, dir, mux, buf, len, p.m_TimeOut)?;
         let slot = usize::from(

@@ -133,11 +133,24 @@ impl NmtMaster {
                 return Err(CopKernel::NmtmSlaveNodeExist);
             }
         }
+        // A node listed before keeps its supervision state (the
+        // application's table is read again when it changes).
+        let previous = self.slaves;
         self.slaves = Self::new().slaves;
         for (s, n) in self.slaves.iter_mut().zip(used()) {
-            s.node = *n;
+            match previous.iter().find(|p| p.node == *n) {
+                Some(p) => *s = *p,
+                None => s.node = *n,
+            }
         }
         Ok(())
+    }
+
+    /// True when the used entries of `nodes` (node-IDs other than 0), in
+    /// their order, are the slaves the master manages.
+    pub fn same_slaves(&self, nodes: &[u8]) -> bool {
+        let listed = self.slaves.iter().map(|s| s.node).filter(|n| *n != 0);
+        listed.eq(nodes.iter().copied().filter(|n| *n != 0))
     }
 
     fn slave_mut(&mut self, node: u8) -> CopResult<&mut Slave> {
@@ -338,6 +351,26 @@ mod tests {
         );
         assert!(m.configure_guarding(6, 100, 3, Ticks(0)).is_ok());
         assert_eq!(m.slave_info(6).map(|i| i.guard_ms), Ok(100));
+    }
+
+    #[test]
+    fn a_table_defined_again_keeps_the_state_of_the_nodes_it_still_lists() {
+        let mut m = NmtMaster::new();
+        m.enable();
+        assert!(m.define_slaves(&[0, 0]).is_ok());
+        assert!(m.same_slaves(&[0, 0]));
+        assert!(!m.same_slaves(&[4, 0]));
+        assert!(m.define_slaves(&[4, 0]).is_ok());
+        let mut q = ActionQueue::new();
+        m.on_error_control(&nmt::encode_bootup(4), &mut q);
+        assert!(m.configure_guarding(4, 100, 3, Ticks(0)).is_ok());
+        let before = m.slave_info(4);
+        assert!(m.same_slaves(&[0, 4]) && !m.same_slaves(&[4, 9]));
+        assert!(m.define_slaves(&[4, 9]).is_ok());
+        assert_eq!(m.slave_info(4), before);
+        assert_eq!(m.slave_info(9).map(|i| i.flags), Ok(0x01));
+        assert!(m.define_slaves(&[9]).is_ok());
+        assert_eq!(m.slave_info(4), Err(CopKernel::NmtmSlaveEntryNotExist));
     }
 
     #[test]
