@@ -7,7 +7,7 @@
 use core::sync::atomic::AtomicU8;
 
 use super::Stack;
-use crate::error::CopKernel;
+use crate::error::{CopKernel, CopResult};
 use crate::od::dynamic::{BuildInfo, DynPool, Installed, Target};
 use crate::od::{ByteOrder, ObdEntry, ObjectDictionary};
 use crate::pdo::Channel;
@@ -28,15 +28,10 @@ impl Target for Stack {
         Stack::od_mut(self)
     }
 
-    fn write_object(
-        &mut self,
-        index: u16,
-        sub: u8,
-        order: ByteOrder,
-        data: &[u8],
-        now: Ticks,
-    ) -> Result<(), CopKernel> {
-        Stack::write_object(self, index, sub, order, data, now).map_err(|e| e.kernel)
+    fn write(&mut self, at: (u16, u8), order: ByteOrder, data: &[u8], now: Ticks) -> CopResult {
+        let (index, sub) = at;
+        self.write_object(index, sub, order, data, now)
+            .map_err(|e| e.kernel)
     }
 
     fn dynamic_od(&self) -> Option<&Installed> {

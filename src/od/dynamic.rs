@@ -116,7 +116,7 @@ use core::sync::atomic::AtomicU8;
 
 use super::dcf::{self, Container, Entry, PiArea, PiLayout, PiParams, attr};
 use super::{Access, ByteOrder, DataType, ObdEntry, ObjectDictionary, Part, kind, value};
-use crate::error::CopKernel;
+use crate::error::{CopKernel, CopResult};
 use crate::pdo::mapping;
 use crate::pdo::{Direction, PDO_MAX_MAPPENTRIES, PdoIndex, Role};
 use crate::port::{CanPort, Ticks};
@@ -142,14 +142,8 @@ pub(crate) trait Target {
     /// The stack's dictionary, to install a new user part.
     fn od_mut(&mut self) -> &mut ObjectDictionary;
     /// A write through the dictionary's checks and the modules' hooks.
-    fn write_object(
-        &mut self,
-        index: u16,
-        sub: u8,
-        order: ByteOrder,
-        data: &[u8],
-        now: Ticks,
-    ) -> Result<(), CopKernel>;
+    /// (`at`: index and subindex.)
+    fn write(&mut self, at: (u16, u8), order: ByteOrder, data: &[u8], now: Ticks) -> CopResult;
     /// The installed dynamic OD.
     fn dynamic_od(&self) -> Option<&Installed>;
     /// Installs (or forgets) the dynamic OD.
@@ -504,7 +498,7 @@ impl<'a> Plan<'a> {
         od: &ObjectDictionary,
         image_len: usize,
     ) -> Result<Self, CopKernel> {
-        Self::make(c, od, image_len, &mut [], &mut None)
+        Self::new_blamed(c, od, image_len, &mut [], &mut None)
     }
 
     /// [`Plan::new`] for a container with an index
@@ -519,7 +513,13 @@ impl<'a> Plan<'a> {
         image_len: usize,
         scratch: &'a mut [u8],
     ) -> Result<Self, CopKernel> {
-        Self::make(c, od, image_len, scratch, &mut None)
+        Self::new_blamed(c, od, image_len, scratch, &mut None)
+    }
+
+    /// Bytes the notes take at the end of the scratch given to
+    /// [`Plan::new_with_notes`] (0 without notes).
+    pub fn notes_len(&self) -> usize {
+        self.notes.len()
     }
 
     /// [`Plan::new_with_notes`] (empty `scratch`: [`Plan::new`]) that names
@@ -533,22 +533,6 @@ impl<'a> Plan<'a> {
         blame: &mut Option<Blame>,
     ) -> Result<Self, CopKernel> {
         *blame = None;
-        Self::make(c, od, image_len, scratch, blame)
-    }
-
-    /// Bytes the notes take at the end of the scratch given to
-    /// [`Plan::new_with_notes`] (0 without notes).
-    pub fn notes_len(&self) -> usize {
-        self.notes.len()
-    }
-
-    fn make(
-        c: Container<'a>,
-        od: &ObjectDictionary,
-        image_len: usize,
-        scratch: &'a mut [u8],
-        blame: &mut Option<Blame>,
-    ) -> Result<Self, CopKernel> {
         let notes: &'a mut [u8] = match scratch.len().checked_sub(c.len()) {
             Some(start) if c.is_indexed() => scratch.get_mut(start..).unwrap_or_default(),
             _ => &mut [],
@@ -1134,14 +1118,13 @@ fn write_one(
     now: Ticks,
 ) -> Result<(), CopKernel> {
     match w.op {
-        Op::Value(data) => stack.write_object(w.index, w.sub, ByteOrder::Wire, data, now),
+        Op::Value(data) => stack.write((w.index, w.sub), ByteOrder::Wire, data, now),
         Op::Uint(v) => {
             let obj = stack.od().find(w.index, w.sub).map_err(|e| e.kernel)?;
             let n = obj.data_type().wire_size().unwrap_or(0).min(8);
             let bytes = v.to_le_bytes();
-            stack.write_object(
-                w.index,
-                w.sub,
+            stack.write(
+                (w.index, w.sub),
                 ByteOrder::Wire,
                 bytes.get(..n).unwrap_or(&[]),
                 now,
@@ -1159,7 +1142,7 @@ fn write_one(
             if v & u64::from(COB_INVALID) != 0 {
                 return Ok(());
             }
-            stack.write_object(w.index, w.sub, ByteOrder::Native, data, now)
+            stack.write((w.index, w.sub), ByteOrder::Native, data, now)
         }
     }
 }
