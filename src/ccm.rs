@@ -41,6 +41,7 @@ use crate::wire::emcy::Emergency;
 use crate::wire::nmt::{self, NmtCs};
 use crate::wire::srdo::{COB_ID_COUNT, COB_ID_MIN, GFC_ID};
 
+mod dynod;
 mod pdo;
 mod services;
 

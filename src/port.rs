@@ -207,6 +207,23 @@ pub trait Clock {
     fn now(&self) -> Ticks;
 }
 
+/// A port that records every frame sent and receives nothing (unit
+/// tests of the services).
+#[cfg(test)]
+#[derive(Default)]
+pub(crate) struct Recorder(pub(crate) Vec<CanFrame>);
+
+#[cfg(test)]
+impl CanPort for Recorder {
+    fn send(&mut self, frame: &CanFrame, _: Priority) -> CopResult {
+        self.0.push(*frame);
+        Ok(())
+    }
+    fn receive(&mut self) -> Option<RxFrame> {
+        None
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

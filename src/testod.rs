@@ -127,6 +127,24 @@ pub fn parts() -> (&'static [ObdEntry], &'static [ObdEntry]) {
     (&GENERIC, &MANUFACTURER)
 }
 
+/// A small deterministic generator (xorshift64*) for the randomised
+/// unit tests.
+#[cfg(test)]
+pub(crate) struct Rng(pub(crate) u64);
+
+#[cfg(test)]
+impl Rng {
+    pub(crate) fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+    pub(crate) fn below(&mut self, n: u64) -> u64 {
+        self.next() % n
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -83,20 +83,8 @@ impl HeartbeatProducer {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::error::CopResult;
-    use crate::port::{CanFrame, RxFrame};
 
-    #[derive(Default)]
-    struct Sink(Vec<CanFrame>);
-    impl CanPort for Sink {
-        fn send(&mut self, f: &CanFrame, _: Priority) -> CopResult {
-            self.0.push(*f);
-            Ok(())
-        }
-        fn receive(&mut self) -> Option<RxFrame> {
-            None
-        }
-    }
+    use crate::port::Recorder as Sink;
 
     #[test]
     fn sends_every_period_after_start() {

@@ -319,18 +319,9 @@ impl NmtMaster {
 mod tests {
     use super::*;
     use crate::event::Action;
-    use crate::port::{CanId, RxFrame};
+    use crate::port::CanId;
 
-    struct Sink(Vec<CanFrame>);
-    impl CanPort for Sink {
-        fn send(&mut self, f: &CanFrame, _: Priority) -> CopResult {
-            self.0.push(*f);
-            Ok(())
-        }
-        fn receive(&mut self) -> Option<RxFrame> {
-            None
-        }
-    }
+    use crate::port::Recorder as Sink;
 
     #[test]
     fn slave_table_checks() {

@@ -281,6 +281,18 @@ pub struct Subindices {
 }
 
 impl Subindices {
+    /// Counts the key `k` of a sorted index (index << 8 | subindex) unless
+    /// it repeats the one before (`prev`).
+    fn count_key(&mut self, prev: &mut Option<u32>, k: u32) {
+        if *prev != Some(k) {
+            let sub = k as u8;
+            self.distinct += 1;
+            self.has_zero |= sub == 0;
+            self.highest = self.highest.max(sub);
+            *prev = Some(k);
+        }
+    }
+
     /// True when the object has subindices, but not subindex 0 (an array or
     /// record whose count the container does not carry).
     pub const fn lacks_count(&self) -> bool {
@@ -847,13 +859,7 @@ impl<'a> Container<'a> {
                     if k >> 8 != u32::from(index) {
                         break;
                     }
-                    if prev != Some(k) {
-                        let sub = k as u8;
-                        s.distinct += 1;
-                        s.has_zero |= sub == 0;
-                        s.highest = s.highest.max(sub);
-                        prev = Some(k);
-                    }
+                    s.count_key(&mut prev, k);
                     slot += 1;
                 }
             }
@@ -1094,13 +1100,7 @@ impl SubsOf<'_, '_> {
         let mut prev = None;
         for slot in self.slot..self.end {
             let k = ix.key_at(slot);
-            if prev != Some(k) {
-                let sub = k as u8;
-                s.distinct += 1;
-                s.has_zero |= sub == 0;
-                s.highest = s.highest.max(sub);
-                prev = Some(k);
-            }
+            s.count_key(&mut prev, k);
         }
         s
     }

@@ -1,9 +1,11 @@
 //! The dynamic object dictionary (SYS TEC CcmDyn, seed manual L-1087d):
 //! what a binary DCF container ([`super::dcf`]) does to a dictionary.
 //!
-//! This module decides; [`crate::ffi::dynod`] builds the tables in the
-//! static pool (raw pointers) and exports `DynBuildOd` / `DynDestroyOd`.
-//! [`DynPool`] is the safe Rust entry point.
+//! This module decides; [`DynPool`] lays the tables out in its static
+//! memory (`pool.rs`, the raw pointers in [`crate::od::table`]); the stack
+//! applies the result through `Target` (`src/ccm/dynod.rs`), and
+//! [`crate::ffi::dynod`] exports `DynBuildOd` / `DynDestroyOd`. [`DynPool`]
+//! is the safe Rust entry point.
 //!
 //! # What a container does (seed Bild 2)
 //! Every entry either addresses an object that exists (the static parts or
@@ -114,14 +116,56 @@ use core::sync::atomic::AtomicU8;
 
 use super::dcf::{self, Container, Entry, PiArea, PiLayout, PiParams, attr};
 use super::{Access, ByteOrder, DataType, ObdEntry, ObjectDictionary, Part, kind, value};
-use crate::ccm::Stack;
-use crate::error::CopKernel;
+use crate::error::{CopKernel, CopResult};
 use crate::pdo::mapping;
 use crate::pdo::{Direction, PDO_MAX_MAPPENTRIES, PdoIndex, Role};
-use crate::port::Ticks;
+use crate::port::{CanPort, Ticks};
 use crate::wire::pdo::{COB_INVALID, check_identifier};
 
-pub use crate::ffi::dynod::DynPool;
+pub(crate) mod pool;
+
+pub use super::table::DynPool;
+pub use pool::BuildError;
+
+/// The stack a dynamic OD is built for, as the build sees it: the
+/// dictionary, its write path, the PDO module's pooled channels and the
+/// modules' reconfiguration. This module and the pool decide and lay the
+/// tables out; the stack (`src/ccm/dynod.rs`) implements this interface
+/// and so applies the result without the dictionary knowing the stack.
+pub(crate) trait Target {
+    /// The state of one PDO (the PDO module's channel).
+    type Channel: 'static;
+    /// A PDO channel as the PDO module starts it.
+    fn new_channel() -> Self::Channel;
+    /// The stack's dictionary.
+    fn od(&self) -> &ObjectDictionary;
+    /// The stack's dictionary, to install a new user part.
+    fn od_mut(&mut self) -> &mut ObjectDictionary;
+    /// A write through the dictionary's checks and the modules' hooks.
+    /// (`at`: index and subindex.)
+    fn write(&mut self, at: (u16, u8), order: ByteOrder, data: &[u8], now: Ticks) -> CopResult;
+    /// The installed dynamic OD.
+    fn dynamic_od(&self) -> Option<&Installed>;
+    /// Installs (or forgets) the dynamic OD.
+    fn set_dynamic_od(&mut self, d: Option<Installed>);
+    /// Hands the PDO module channels from the pool.
+    fn attach_pooled(
+        &mut self,
+        rx: Option<&'static mut [Self::Channel]>,
+        tx: Option<&'static mut [Self::Channel]>,
+    );
+    /// Takes the pooled channels back from the PDO module.
+    fn detach_pooled(&mut self, port: &mut impl CanPort);
+    /// Lets every module take over its parameters from the dictionary.
+    fn reload_configuration(&mut self, port: &mut impl CanPort, now: Ticks);
+    /// `DynDestroyOd`'s sequence (seed manual 5.2).
+    fn destroy_dynamic_od(
+        &mut self,
+        original_user: &'static [ObdEntry],
+        port: &mut impl CanPort,
+        now: Ticks,
+    );
+}
 
 /// The container entry a refused build is about (`DynGetLastError`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -454,7 +498,7 @@ impl<'a> Plan<'a> {
         od: &ObjectDictionary,
         image_len: usize,
     ) -> Result<Self, CopKernel> {
-        Self::make(c, od, image_len, &mut [], &mut None)
+        Self::new_blamed(c, od, image_len, &mut [], &mut None)
     }
 
     /// [`Plan::new`] for a container with an index
@@ -469,7 +513,13 @@ impl<'a> Plan<'a> {
         image_len: usize,
         scratch: &'a mut [u8],
     ) -> Result<Self, CopKernel> {
-        Self::make(c, od, image_len, scratch, &mut None)
+        Self::new_blamed(c, od, image_len, scratch, &mut None)
+    }
+
+    /// Bytes the notes take at the end of the scratch given to
+    /// [`Plan::new_with_notes`] (0 without notes).
+    pub fn notes_len(&self) -> usize {
+        self.notes.len()
     }
 
     /// [`Plan::new_with_notes`] (empty `scratch`: [`Plan::new`]) that names
@@ -483,22 +533,6 @@ impl<'a> Plan<'a> {
         blame: &mut Option<Blame>,
     ) -> Result<Self, CopKernel> {
         *blame = None;
-        Self::make(c, od, image_len, scratch, blame)
-    }
-
-    /// Bytes the notes take at the end of the scratch given to
-    /// [`Plan::new_with_notes`] (0 without notes).
-    pub fn notes_len(&self) -> usize {
-        self.notes.len()
-    }
-
-    fn make(
-        c: Container<'a>,
-        od: &ObjectDictionary,
-        image_len: usize,
-        scratch: &'a mut [u8],
-        blame: &mut Option<Blame>,
-    ) -> Result<Self, CopKernel> {
         let notes: &'a mut [u8] = match scratch.len().checked_sub(c.len()) {
             Some(start) if c.is_indexed() => scratch.get_mut(start..).unwrap_or_default(),
             _ => &mut [],
@@ -989,19 +1023,10 @@ impl<'a> Plan<'a> {
     /// (at least [`Plan::snapshot_bytes`]) first receives every value that
     /// will change; if a write is refused the values are put back and the
     /// refusal is returned.
-    pub fn apply(
+    /// `blame` names the entry whose write was refused.
+    pub(crate) fn apply_blamed(
         &self,
-        stack: &mut Stack,
-        snapshot: &mut [u8],
-        now: Ticks,
-    ) -> Result<(), CopKernel> {
-        self.apply_blamed(stack, snapshot, now, &mut None)
-    }
-
-    /// [`Plan::apply`] naming in `blame` the entry whose write was refused.
-    pub fn apply_blamed(
-        &self,
-        stack: &mut Stack,
+        stack: &mut impl Target,
         snapshot: &mut [u8],
         now: Ticks,
         blame: &mut Option<Blame>,
@@ -1087,28 +1112,23 @@ fn restore(od: &ObjectDictionary, snapshot: &[u8]) {
 }
 
 fn write_one(
-    stack: &mut Stack,
+    stack: &mut impl Target,
     snapshot: &[u8],
     w: Write<'_>,
     now: Ticks,
 ) -> Result<(), CopKernel> {
     match w.op {
-        Op::Value(data) => stack
-            .write_object(w.index, w.sub, ByteOrder::Wire, data, now)
-            .map_err(|e| e.kernel),
+        Op::Value(data) => stack.write((w.index, w.sub), ByteOrder::Wire, data, now),
         Op::Uint(v) => {
             let obj = stack.od().find(w.index, w.sub).map_err(|e| e.kernel)?;
             let n = obj.data_type().wire_size().unwrap_or(0).min(8);
             let bytes = v.to_le_bytes();
-            stack
-                .write_object(
-                    w.index,
-                    w.sub,
-                    ByteOrder::Wire,
-                    bytes.get(..n).unwrap_or(&[]),
-                    now,
-                )
-                .map_err(|e| e.kernel)
+            stack.write(
+                (w.index, w.sub),
+                ByteOrder::Wire,
+                bytes.get(..n).unwrap_or(&[]),
+                now,
+            )
         }
         Op::Original => {
             let Some((_, _, data)) =
@@ -1122,9 +1142,7 @@ fn write_one(
             if v & u64::from(COB_INVALID) != 0 {
                 return Ok(());
             }
-            stack
-                .write_object(w.index, w.sub, ByteOrder::Native, data, now)
-                .map_err(|e| e.kernel)
+            stack.write((w.index, w.sub), ByteOrder::Native, data, now)
         }
     }
 }

@@ -644,3 +644,352 @@ impl Default for ObdVarEntry {
         Self::new()
     }
 }
+
+// ---------------------------------------------------------------------
+// The pool of the dynamic OD
+// ---------------------------------------------------------------------
+
+/// The memory of the dynamic OD's pool and the code that lays the tables
+/// out in it (raw pointers); the rest of the pool (its state, the layout)
+/// is in [`crate::od::dynamic::pool`], the decisions in
+/// [`crate::od::dynamic`].
+mod pool {
+    use core::cell::UnsafeCell;
+    use core::ffi::c_void;
+    use core::sync::atomic::{AtomicBool, AtomicU8, AtomicU32};
+
+    use super::{ObdEntry, ObdSubEntry};
+    use crate::error::CopKernel;
+    use crate::od::Part;
+    use crate::od::dcf::Container;
+    use crate::od::dynamic::pool::{Layout, copy_entry, init_image};
+    use crate::od::dynamic::{Blame, BuildInfo, Installed, Place, Plan, Target, image_overlaps_in};
+    use crate::port::{CanPort, Ticks};
+
+    /// The pool's bytes, zero from the start (a `static` in `.bss`), so that
+    /// they can always be lent out as `&mut [u8]`.
+    #[repr(C, align(8))]
+    struct Mem<const N: usize>([u8; N]);
+
+    /// Storage for the tables of one dynamic object dictionary (see
+    /// [`crate::ffi::dynod`] for the layout). Declare it as a `static`; it is claimed by a
+    /// build and given back by [`DynPool::destroy`] or [`DynPool::release`].
+    ///
+    /// ```
+    /// use cop::od::dynamic::DynPool;
+    /// static POOL: DynPool<4096> = DynPool::new();
+    /// assert!(!POOL.is_in_use());
+    /// ```
+    pub struct DynPool<const N: usize> {
+        mem: UnsafeCell<Mem<N>>,
+        pub(in crate::od) claimed: AtomicBool,
+        /// The last build's refusal: code (0 after a build that succeeded).
+        pub(in crate::od) last_code: AtomicU32,
+        /// Index << 8 | subindex of the entry it was about (0: none).
+        pub(in crate::od) last_entry: AtomicU32,
+        /// Byte offset of that entry in the container.
+        pub(in crate::od) last_offset: AtomicU32,
+    }
+
+    // SAFETY: the memory is written only by the build that claimed the pool
+    // (`claimed` is taken with compare-exchange) and read through the tables
+    // afterwards; the stack API is single-threaded per instance.
+    unsafe impl<const N: usize> Sync for DynPool<N> {}
+
+    impl<const N: usize> Default for DynPool<N> {
+        fn default() -> Self {
+            Self::new()
+        }
+    }
+
+    impl<const N: usize> DynPool<N> {
+        /// An unused pool.
+        pub const fn new() -> Self {
+            DynPool {
+                mem: UnsafeCell::new(Mem([0; N])),
+                claimed: AtomicBool::new(false),
+                last_code: AtomicU32::new(0),
+                last_entry: AtomicU32::new(0),
+                last_offset: AtomicU32::new(0),
+            }
+        }
+
+        pub(in crate::od) fn base(&self) -> *mut u8 {
+            self.mem.get() as *mut u8
+        }
+
+        #[allow(clippy::too_many_arguments)]
+        pub(in crate::od) fn plan_and_fill<T: Target>(
+            &'static self,
+            claimed: bool,
+            stack: &mut T,
+            port: &mut impl CanPort,
+            now: Ticks,
+            container: &[u8],
+            image: Option<&'static [AtomicU8]>,
+            blame: &mut Option<Blame>,
+        ) -> Result<BuildInfo, CopKernel> {
+            let image_len = image.map_or(0, <[AtomicU8]>::len);
+            let plan = if claimed {
+                // SAFETY: the pool is claimed by this build, so nothing else
+                // uses its memory, and no reference into it exists (a previous
+                // build's tables were detached from their stack before the pool
+                // was given back). Its N bytes are initialised (`Mem` starts
+                // zeroed and is only ever written with bytes).
+                let scratch = unsafe { core::slice::from_raw_parts_mut(self.base(), N) };
+                let c = Container::parse_indexed(container, scratch).map_err(|e| e.kernel())?;
+                // SAFETY: the index took the last `index_len()` bytes of the
+                // pool; the bytes before it are not referred to any more (the
+                // slice above is not used again).
+                let notes =
+                    unsafe { core::slice::from_raw_parts_mut(self.base(), N - c.index_len()) };
+                Plan::new_blamed(c, stack.od(), image_len, notes, blame)?
+            } else {
+                let c = Container::parse(container).map_err(|e| e.kernel())?;
+                Plan::new_blamed(c, stack.od(), image_len, &mut [], blame)?
+            };
+            let original = stack.od().part(Part::User);
+            let layout =
+                Layout::of::<T::Channel>(&plan, original.len()).ok_or(CopKernel::DynNoMemory)?;
+            if layout.end > N {
+                return Err(CopKernel::DynNoMemory);
+            }
+            if !claimed {
+                return Err(CopKernel::NoFreeInstance);
+            }
+            // The index and the plan's notes lie at the end of the pool; the
+            // tables and the snapshot are written before them, the copy of the
+            // index segment over them at the very end. When the tables would
+            // reach them, the build goes on without them.
+            let index_at = N - plan.container().index_len() - plan.notes_len();
+            let plan = if index_at < layout.copy_at {
+                plan.without_index()
+            } else {
+                plan
+            };
+            self.fill(
+                &plan, &layout, index_at, original, stack, port, now, image, blame,
+            )
+        }
+
+        #[allow(clippy::too_many_arguments)]
+        fn fill<T: Target>(
+            &'static self,
+            plan: &Plan<'_>,
+            layout: &Layout,
+            index_at: usize,
+            original: &'static [ObdEntry],
+            stack: &mut T,
+            port: &mut impl CanPort,
+            now: Ticks,
+            image: Option<&'static [AtomicU8]>,
+            blame: &mut Option<Blame>,
+        ) -> Result<BuildInfo, CopKernel> {
+            // The pool is claimed by this build, so nothing else writes it; the
+            // only references into it are the container's index and the plan's
+            // notes, at `index_at..N`, which is not below `copy_at` while the
+            // plan uses them (checked by the caller). `layout.end <= N` was
+            // checked, so every region is inside `mem`. Every byte of the
+            // regions that is read later is written below first (tables, the
+            // variables' initial values, the snapshot records).
+            let base = self.base();
+            let entries_ptr = base as *mut ObdEntry;
+            // SAFETY: subs_at + subs * size <= end <= N (Layout::of).
+            let subs_ptr = unsafe { base.add(layout.subs_at) } as *mut ObdSubEntry;
+            // SAFETY: data_at <= end <= N.
+            let mut data_ptr = unsafe { base.add(layout.data_at) };
+            let data_end = layout.snap_at;
+
+            let mut written_entries = 0usize;
+            let mut written_subs = 0usize;
+            let mut orig = original.iter().peekable();
+            let mut put_entry = |e: ObdEntry| -> Result<(), CopKernel> {
+                if written_entries >= layout.entries {
+                    return Err(CopKernel::DynInvalidConfig);
+                }
+                // SAFETY: written_entries < entries; the region holds `entries`
+                // properly aligned ObdEntry slots (offset 0 of an 8-aligned pool).
+                unsafe { entries_ptr.add(written_entries).write(e) };
+                written_entries += 1;
+                Ok(())
+            };
+            for (index, subs) in plan.new_objects() {
+                while let Some(o) = orig.next_if(|o| o.index() < index) {
+                    put_entry(copy_entry(o))?;
+                }
+                let first = written_subs;
+                for d in subs {
+                    let d = d?;
+                    if written_subs >= layout.subs {
+                        return Err(CopKernel::DynInvalidConfig);
+                    }
+                    let current: *mut c_void = match d.place {
+                        Place::Pool => {
+                            let len = d.storage_len();
+                            // SAFETY: data_ptr stays within data_at..snap_at:
+                            // the plan counted `storage_len` for every pool
+                            // variable into data_bytes (checked below).
+                            let used = unsafe { data_ptr.offset_from(base) } as usize;
+                            if used + len > data_end {
+                                return Err(CopKernel::DynInvalidConfig);
+                            }
+                            // SAFETY: the range is inside the zeroed, claimed
+                            // pool and no other reference to it exists.
+                            let dst = unsafe { core::slice::from_raw_parts_mut(data_ptr, len) };
+                            d.initial_bytes(dst)?;
+                            let p = data_ptr as *mut c_void;
+                            // SAFETY: stays within the region (checked above).
+                            data_ptr = unsafe { data_ptr.add(len) };
+                            p
+                        }
+                        Place::Image(off) => {
+                            let img = image.ok_or(CopKernel::DynInvalidConfig)?;
+                            let var = img
+                                .get(off as usize..off as usize + d.storage_len())
+                                .ok_or(CopKernel::DynNoMemory)?;
+                            var.as_ptr() as *mut c_void
+                        }
+                    };
+                    let e = ObdSubEntry {
+                        m_bSubIndex: d.sub,
+                        m_bType: d.typ.code(),
+                        m_bAccess: d.access.0,
+                        m_bKind: d.kind,
+                        m_dwSize: d.size,
+                        m_pDefault: core::ptr::null(),
+                        m_pCurrent: current,
+                    };
+                    // SAFETY: written_subs < subs; the region holds `subs`
+                    // aligned slots.
+                    unsafe { subs_ptr.add(written_subs).write(e) };
+                    written_subs += 1;
+                }
+                let count =
+                    u8::try_from(written_subs - first).map_err(|_| CopKernel::DynInvalidConfig)?;
+                put_entry(ObdEntry {
+                    m_wIndex: index,
+                    // SAFETY: `first` <= written_subs <= subs.
+                    m_pSubIndex: unsafe { subs_ptr.add(first) },
+                    m_bCount: count,
+                    m_fpCallback: None,
+                })?;
+            }
+            for o in orig {
+                put_entry(copy_entry(o))?;
+            }
+            if written_entries != layout.entries || written_subs != layout.subs {
+                return Err(CopKernel::DynInvalidConfig);
+            }
+            // SAFETY: snap_at..copy_at is initialised pool memory nobody else
+            // refers to.
+            let snapshot: &mut [u8] = unsafe {
+                core::slice::from_raw_parts_mut(
+                    base.add(layout.snap_at),
+                    layout.copy_at - layout.snap_at,
+                )
+            };
+            // SAFETY: every slot was written above; from now on the tables are
+            // only read (until the pool is given back).
+            let merged: &'static [ObdEntry] =
+                unsafe { core::slice::from_raw_parts(entries_ptr, layout.entries) };
+            // SAFETY: as above.
+            let subs: &'static [ObdSubEntry] =
+                unsafe { core::slice::from_raw_parts(subs_ptr, layout.subs) };
+
+            if let Some(img) = image {
+                // The bytes between the copy region's start and the index are
+                // free until the copy is made (the last step).
+                let free_end = if plan.container().is_indexed() {
+                    index_at
+                } else {
+                    N
+                };
+                // SAFETY: copy_at..free_end lies inside the pool, after every
+                // table and the snapshot and before the index; nothing refers
+                // to it.
+                let free = unsafe {
+                    core::slice::from_raw_parts_mut(
+                        base.add(layout.copy_at),
+                        free_end.saturating_sub(layout.copy_at),
+                    )
+                };
+                if image_overlaps_in(img, subs, free) {
+                    return Err(CopKernel::DynInvalidConfig);
+                }
+            }
+            let mut candidate = *stack.od();
+            candidate
+                .set_user_part(merged)
+                .map_err(|_| CopKernel::DynInvalidConfig)?;
+            plan.check_pdos_blamed(&candidate, blame)?;
+
+            // The candidate is the stack's dictionary with the new user part,
+            // already validated.
+            *stack.od_mut() = candidate;
+            let pooled = layout.rx_channels + layout.tx_channels > 0;
+            if pooled {
+                // SAFETY: chan_at is aligned for the channel type and chan_at + channels
+                // * size <= data_at <= N (Layout::of); the region is claimed
+                // pool memory nobody else refers to. Every slot is written
+                // before the slices are made.
+                let (rx, tx) = unsafe {
+                    let first = base.add(layout.chan_at) as *mut T::Channel;
+                    let total = layout.rx_channels + layout.tx_channels;
+                    for i in 0..total {
+                        first.add(i).write(T::new_channel());
+                    }
+                    (
+                        core::slice::from_raw_parts_mut(first, layout.rx_channels),
+                        core::slice::from_raw_parts_mut(
+                            first.add(layout.rx_channels),
+                            layout.tx_channels,
+                        ),
+                    )
+                };
+                stack.attach_pooled(
+                    (layout.rx_channels > 0).then_some(rx),
+                    (layout.tx_channels > 0).then_some(tx),
+                );
+                stack.reload_configuration(port, now);
+            }
+            if let Err(e) = plan.apply_blamed(stack, snapshot, now, blame) {
+                let _ = stack.od_mut().set_user_part(original);
+                if pooled {
+                    stack.detach_pooled(port);
+                }
+                stack.reload_configuration(port, now);
+                return Err(e);
+            }
+            if let Some(img) = image {
+                init_image(plan, img);
+            }
+            let info = BuildInfo {
+                pi: plan.pi,
+                new_indices: plan.new_indices,
+                new_subs: plan.new_subs,
+                pool_used: layout.end,
+            };
+            // The plan (and its index) is not used from here on: the copy of
+            // the index segment, kept for the resets, takes the end of the
+            // layout.
+            let segment = plan.container().index_segment();
+            // SAFETY: copy_at + segment.len() = end <= N; the source is the
+            // caller's container, which does not overlap the pool; the index
+            // that lay here is not read any more.
+            let values: &'static [u8] = unsafe {
+                let dst = base.add(layout.copy_at);
+                core::ptr::copy_nonoverlapping(segment.as_ptr(), dst, segment.len());
+                core::slice::from_raw_parts(dst, segment.len())
+            };
+            stack.set_dynamic_od(Some(Installed {
+                values,
+                original_user: original,
+                pool: self.id(),
+            }));
+            stack.reload_configuration(port, now);
+            Ok(info)
+        }
+    }
+}
+
+pub use pool::DynPool;

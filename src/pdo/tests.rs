@@ -8,7 +8,6 @@ use super::decl::{CommuDefaults, CommuVars, commu_subs};
 use super::mapping::{Rules, check_entry, check_mapping, check_write, refuse};
 use super::*;
 use crate::od::{Access, DataType, NoHooks, ObdEntry, ObdSubEntry, decl as od_decl};
-use crate::port::CanFrame;
 
 crate::pdo_commu!(static S1400, V1400 = 0x8000_0200, 255, 0, 0);
 crate::pdo_mapp!(static S1600, V1600 = [0x2000_0108, 0x2000_0210]);
@@ -430,19 +429,7 @@ fn pdo_index_decoding() {
     }
 }
 
-/// A port that records what is sent.
-#[derive(Default)]
-struct Recorder(Vec<CanFrame>);
-
-impl CanPort for Recorder {
-    fn send(&mut self, frame: &CanFrame, _: Priority) -> CopResult {
-        self.0.push(*frame);
-        Ok(())
-    }
-    fn receive(&mut self) -> Option<RxFrame> {
-        None
-    }
-}
+use crate::port::Recorder;
 
 /// One processing cycle of the module alone; `true` when its work was done.
 fn cycle(pdo: &mut Pdo, od: &ObjectDictionary, port: &mut Recorder, now: Ticks) -> bool {

@@ -176,20 +176,8 @@ impl SyncProducer {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::error::CopResult;
-    use crate::port::RxFrame;
 
-    #[derive(Default)]
-    struct Sink(Vec<CanFrame>);
-    impl CanPort for Sink {
-        fn send(&mut self, f: &CanFrame, _: Priority) -> CopResult {
-            self.0.push(*f);
-            Ok(())
-        }
-        fn receive(&mut self) -> Option<RxFrame> {
-            None
-        }
-    }
+    use crate::port::Recorder as Sink;
 
     fn producer(cob: u32, cycle_us: u32) -> SyncProducer {
         let mut p = SyncProducer::new();

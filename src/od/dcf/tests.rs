@@ -355,20 +355,7 @@ fn layout_puts_outputs_after_inputs_aligned() {
 // The index of the entries (parse_indexed): every answer as without it
 // ---------------------------------------------------------------------
 
-/// A small deterministic generator (xorshift64*).
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
-    fn below(&mut self, n: u64) -> u64 {
-        self.next() % n
-    }
-}
+use crate::testod::Rng;
 
 /// A valid container of `n` random entries: indices from a few objects
 /// (communication, PDO, manufacturer, network variables), repeated

@@ -142,20 +142,7 @@ fn read_only_existing_objects_are_checked_not_written() {
 // one of the scanning plan.
 // ---------------------------------------------------------------------
 
-/// A small deterministic generator (xorshift64*).
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
-    fn below(&mut self, n: u64) -> u64 {
-        self.next() % n
-    }
-}
+use crate::testod::Rng;
 
 /// Entries that make sense for the reference dictionary, and some that
 /// do not: existing objects (writable, read-only, constant, PDO
