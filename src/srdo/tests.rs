@@ -258,6 +258,7 @@ fn per_srdo_state_fits_64_bytes() {
     );
 }
 
+// req: SB-3-CRC-VECTORS, M-1.1.3-CRC, M-2.8.8-CALCCRC
 #[test]
 fn crc_vectors_through_calc_crc() {
     // Source: SAFETY_BEHAVIOUR.md section 3, table of public test vectors;
@@ -289,6 +290,7 @@ fn crc_vectors_through_calc_crc() {
     assert_eq!(srdo.calc_crc(&od, 0x1305), Err(CopKernel::SrdoNotExist));
 }
 
+// req: SB-3-CRC-VECTORS
 #[test]
 fn crc_byte_stream_of_row_1() {
     // Source: SAFETY_BEHAVIOUR.md section 3, "Byte stream of the first row".
@@ -349,6 +351,7 @@ fn init_finds_objects_and_refuses_bad_tables() {
     );
 }
 
+// req: M-2.5.3-STATUS
 #[test]
 fn state_byte_api() {
     let (_g, _od, mut srdo) = setup();
@@ -438,6 +441,7 @@ mod dynamic {
         assert!(srdo.is_running());
     }
 
+    // req: M-2.8.2-CHECK, SB-2-ORDER, SB-2-MAPPING, SB-2-LENGTH, M-1.1-COBID
     #[test]
     fn configuration_check_codes_in_order() {
         let (_g, od, srdo) = setup();
@@ -527,7 +531,7 @@ mod dynamic {
     /// The limits of step 5 and 6 at their boundary: `SRDO_MAX_MAPPENTRIES`
     /// entries (manual 2.4: 128 / granularity) carrying exactly 8 bytes of
     /// normal data (CiA 304: one SRDO frame holds at most 8 bytes) pass.
-    // req: SRDO-CHK-MAPP, SRDO-CHK-LEN
+    // req: SB-2-MAPPING, SB-2-LENGTH, M-2.4-GRANULARITY
     #[test]
     fn full_mapping_at_the_limits_passes() {
         let (_g, od, srdo) = setup();
@@ -569,7 +573,7 @@ mod dynamic {
 
     /// An attached variable must exist and be 1, 2, 4 or 8 bytes wide and
     /// at least as wide as the object's type (check.rs step 5).
-    // req: SRDO-CHK-MAPP
+    // req: SB-2-MAPPING
     #[test]
     fn attached_variables_of_the_wrong_size_are_refused() {
         let (_g, od, srdo) = setup();
@@ -594,7 +598,7 @@ mod dynamic {
     /// Dummy entries (CiA 301 data type indices 0x0001..0x0007): only sub 0,
     /// only the size of their type, only in receive SRDOs, only with
     /// `SRDO_USE_DUMMY_MAPPING` (manual 2.4).
-    // req: SRDO-CHK-DUMMY
+    // req: M-2.4-DUMMY
     #[test]
     fn dummy_entries_only_as_the_manual_allows() {
         let (_g, od, srdo) = setup();
@@ -628,6 +632,7 @@ mod dynamic {
         }
     }
 
+    // req: SB-2-DUPLICATE, M-2.4-GRANULARITY
     #[test]
     fn duplicate_cob_ids_and_granularity() {
         let (_g, od, srdo) = setup();
@@ -681,6 +686,7 @@ mod dynamic {
         assert!(p.vars[2].is_none());
     }
 
+    // req: M-2.5.2-RECEIVE
     #[test]
     fn valid_pair_writes_both_variables_and_reports() {
         let (_g, od, mut srdo) = setup();
@@ -810,6 +816,7 @@ mod dynamic {
         }
     }
 
+    // req: SB-5-NO-WRITE-ON-ERROR, M-2.5.3-STATUS
     #[test]
     fn errors_leave_variables_untouched_and_set_status() {
         let (_g, od, mut srdo) = setup();
@@ -865,6 +872,7 @@ mod dynamic {
         }
     }
 
+    // req: M-1.1-SRVT, M-1.1-SCT
     #[test]
     fn srvt_boundary_and_sct_boundary() {
         let (_g, od, mut srdo) = setup();
@@ -929,6 +937,7 @@ mod dynamic {
         }
     }
 
+    // req: M-1.1-SCT
     #[test]
     fn sct_timeouts_of_several_srdos_at_their_own_ticks() {
         for switch in [false, true] {
@@ -981,6 +990,7 @@ mod dynamic {
         }
     }
 
+    // req: SB-5-SRVT-SWITCH
     #[test]
     fn srvt_checked_before_second_frame_both_settings() {
         for switch in [false, true] {
@@ -1033,6 +1043,7 @@ mod dynamic {
 mod static_mapping {
     use super::*;
 
+    // req: M-2.12.1-STATIC-FIELDS
     #[test]
     fn var_fields_must_match_the_mapping() {
         let (_g, od, mut srdo) = setup();
@@ -1072,6 +1083,7 @@ mod static_mapping {
         );
     }
 
+    // req: M-2.12.1-STATIC-FIELDS
     #[test]
     fn active_srdo_without_fields_fails_the_check() {
         let (_g, od, mut srdo) = setup();
@@ -1166,6 +1178,7 @@ mod sixty_four {
         a
     }
 
+    // req: M-1.5-SIXTYFOUR
     #[test]
     fn sixty_four_receive_srdos() {
         let _g = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
