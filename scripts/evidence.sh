@@ -38,13 +38,14 @@ CORE_REGEX='src/(srdo/(check|crc|hooks|mod|objects|plan)\.rs|wire/srdo\.rs|ffi/s
 MUTANT_FILES=(src/srdo/check.rs src/srdo/crc.rs src/srdo/hooks.rs src/srdo/mod.rs
     src/srdo/objects.rs src/srdo/plan.rs src/wire/srdo.rs src/ffi/srdo.rs)
 
+setup() { [ -n "${EVIDENCE_NO_SETUP:-}" ] || scripts/setup.sh --evidence; }
 log() { printf '[evidence] %s\n' "$*" >&2; }
 
 cmd_trace() { python3 scripts/evidence/trace.py --write "$WORK/trace.json"; }
 cmd_trace_check() { python3 scripts/evidence/trace.py --check; }
 
 cmd_coverage() {
-    scripts/setup.sh --evidence
+    setup
     # Branch coverage needs the nightly compiler (-Z coverage-options=branch).
     local tc=(+nightly) branch=(--branch)
     cargo "${tc[@]}" llvm-cov clean --workspace
@@ -65,7 +66,7 @@ cmd_coverage() {
 # three; the report keeps the best result per mutant (a mutant that only one
 # configuration compiles is caught or missed there).
 cmd_mutants() {
-    scripts/setup.sh --evidence
+    setup
     local files=("${MUTANT_FILES[@]}") extra=()
     if [ $# -gt 0 ] && [ "$1" != "--" ]; then files=("$1"); shift; fi
     if [ $# -gt 0 ] && [ "$1" = "--" ]; then shift; extra=("$@"); fi
@@ -83,8 +84,15 @@ cmd_mutants() {
 }
 
 cmd_report() {
-    scripts/setup.sh --evidence
+    setup
     cmd_trace
+    log "report: fault-injection campaign (10^5 cycles, fixed seed)"
+    cargo run -q -j2 --example fault_injection -- --cycles 100000 --seed 0x5EED0304 >"$WORK/faults.txt"
+    {
+        rustc --version; rustc +nightly --version
+        cargo llvm-cov --version; cargo mutants --version
+        python3 --version; python3 -c 'import matplotlib; print("matplotlib", matplotlib.__version__)'
+    } >"$WORK/versions.txt" 2>&1 || true
     python3 scripts/evidence/report.py "$OUT" "$WORK"
 }
 
