@@ -74,6 +74,7 @@ cmd_mutants() {
         for c in "${CONFIG_NAMES[@]}"; do
             local dir
             dir="$WORK/mutants/$(basename "$f" .rs)-$c"
+            mkdir -p "$dir"
             log "mutants: $f in configuration $c"
             # shellcheck disable=SC2046
             cargo mutants -j1 --file "$f" --output "$dir" \

@@ -2,7 +2,9 @@
 """Reduces an lcov file (cargo llvm-cov, merged over the configurations) to the
 safety-core files: per-file line and branch figures (JSON) and the list of
 every uncovered line and branch (markdown) with the reasons recorded in
-docs/evidence/uncovered_reasons.toml (file + line -> reason).
+docs/evidence/uncovered_reasons.toml: an entry names a file and either a
+text the source line contains (`match`, robust against moved lines) or
+`whole_file = true`.
 
   coverage.py LCOV FILE_REGEX OUT_JSON OUT_MD
 """
@@ -42,10 +44,13 @@ def parse(lcov, regex):
 def main():
     lcov, regex, out_json, out_md = sys.argv[1:5]
     files = parse(lcov, regex)
-    reasons = {}
-    if REASONS.exists():
-        for r in tomllib.loads(REASONS.read_text()).get("uncovered", []):
-            reasons[(r["file"], r["line"])] = r["reason"]
+    reasons = tomllib.loads(REASONS.read_text()).get("uncovered", []) if REASONS.exists() else []
+
+    def reason_for(f, code):
+        for r in reasons:
+            if r["file"] == f and (r.get("whole_file") or r.get("match", "\0") in code):
+                return r["reason"]
+        return None
     summary, md = {}, [
         "# Uncovered lines and branches of the safety core",
         "",
@@ -75,7 +80,7 @@ def main():
             if nb:
                 what.append(f"{nb} branch{'es' if nb > 1 else ''}")
             code = src[n - 1].strip().replace("|", "\\|") if n - 1 < len(src) else ""
-            reason = reasons.get((f, n))
+            reason = reason_for(f, code)
             if reason is None:
                 unexplained += 1
                 reason = "**not yet explained**"
