@@ -4,7 +4,7 @@ safety-core files: per-file line and branch figures (JSON) and the list of
 every uncovered line and branch (markdown) with the reasons recorded in
 docs/evidence/uncovered_reasons.toml: an entry names a file and either a
 text the source line contains (`match`, robust against moved lines) or
-`whole_file = true`.
+`whole_file = true`; `after` additionally requires a text in the line before.
 
   coverage.py LCOV FILE_REGEX OUT_JSON OUT_MD
 """
@@ -46,10 +46,13 @@ def main():
     files = parse(lcov, regex)
     reasons = tomllib.loads(REASONS.read_text()).get("uncovered", []) if REASONS.exists() else []
 
-    def reason_for(f, code):
+    def reason_for(f, code, prev):
         for r in reasons:
-            if r["file"] == f and (r.get("whole_file") or r.get("match", "\0") in code):
-                return r["reason"]
+            if r["file"] != f or not (r.get("whole_file") or r.get("match", "\0") in code):
+                continue
+            if "after" in r and r["after"] not in prev:
+                continue
+            return r["reason"]
         return None
     summary, md = {}, [
         "# Uncovered lines and branches of the safety core",
@@ -80,7 +83,8 @@ def main():
             if nb:
                 what.append(f"{nb} branch{'es' if nb > 1 else ''}")
             code = src[n - 1].strip().replace("|", "\\|") if n - 1 < len(src) else ""
-            reason = reason_for(f, code)
+            prev = src[n - 2] if 1 < n <= len(src) + 1 else ""
+            reason = reason_for(f, code, prev)
             if reason is None:
                 unexplained += 1
                 reason = "**not yet explained**"

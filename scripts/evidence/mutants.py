@@ -59,7 +59,7 @@ def main():
             if entry["argument"] is None:
                 unexplained.append(entry)
     tot = {o: sum(s[o] for s in per_file.values()) for o in list(RANK) + ["equivalent"]}
-    viable = tot["caught"] + tot["timeout"] + tot["missed"]
+    viable = tot["caught"] + tot["timeout"] + tot["missed"] + tot["equivalent"]
     score = 100.0 * (tot["caught"] + tot["timeout"]) / viable if viable else 0.0
     score_eq = (100.0 * (tot["caught"] + tot["timeout"]) / (viable - tot["equivalent"])
                 if viable - tot["equivalent"] else 0.0)

@@ -104,8 +104,10 @@ def main():
     if mut:
         mutants_figure(mut, out / "mutants.png")
         t = mut["total"]
-        md += [f"{t['caught'] + t['timeout']} of {t['caught'] + t['timeout'] + t['missed']} viable mutants caught "
-               f"({mut['score']:.1f} %), {t['equivalent']} survivors argued equivalent "
+        viable = t['caught'] + t['timeout'] + t['missed'] + t['equivalent']
+        md += [f"{t['caught'] + t['timeout']} of {viable} viable mutants caught "
+               f"({mut['score']:.1f} %; {mut['score_without_equivalent']:.1f} % of the non-equivalent ones), "
+               f"{t['equivalent']} survivors argued equivalent "
                f"(docs/evidence/equivalent_mutants.toml), {t['unviable']} unviable. Runs (file-configuration): "
                + ", ".join(f"`{r}`" for r in sorted(mut["runs"])) + ".", "",
                "![mutants](mutants.png)", "", "| file | caught | timeout | missed | equivalent | unviable |",

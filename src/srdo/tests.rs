@@ -531,7 +531,7 @@ mod dynamic {
     /// The limits of step 5 and 6 at their boundary: `SRDO_MAX_MAPPENTRIES`
     /// entries (manual 2.4: 128 / granularity) carrying exactly 8 bytes of
     /// normal data (CiA 304: one SRDO frame holds at most 8 bytes) pass.
-    // req: SB-2-MAPPING, SB-2-LENGTH, M-2.4-GRANULARITY
+    // req: SB-2-MAPPING, SB-2-LENGTH, M-2.4-GRANULARITY, SB-3-CRC-VECTORS
     #[test]
     fn full_mapping_at_the_limits_passes() {
         let (_g, od, srdo) = setup();
@@ -549,6 +549,22 @@ mod dynamic {
         }
         seal(&od, &srdo);
         assert_eq!(srdo.check_config(&od), Ok(()));
+        // The CRC over the longest byte stream, built field by field as
+        // SAFETY_BEHAVIOUR.md section 3 lays it out (direction, SCT, SRVT,
+        // COB-IDs little-endian, count, then subindex + entry per entry).
+        let mut bytes = vec![2u8, 25, 0, 20];
+        bytes.extend_from_slice(&0x101u32.to_le_bytes());
+        bytes.extend_from_slice(&0x102u32.to_le_bytes());
+        bytes.push(2 * pairs);
+        for sub in 1..=2 * pairs {
+            bytes.push(sub);
+            bytes.extend_from_slice(&u32::try_from(get(&od, 0x1381, sub)).unwrap().to_le_bytes());
+        }
+        assert_eq!(bytes.len(), 13 + 5 * SRDO_MAX_MAPPENTRIES);
+        assert_eq!(srdo.calc_crc(&od, 0x1301), Ok(crc::crc16(&bytes)));
+        let mut buf = [0u8; crc::MAX_STREAM];
+        let n = crc::stream_bytes(&od, 0x1301, &mut buf).unwrap();
+        assert_eq!(&buf[..n], &bytes[..], "the diagnostic copy holds all of it");
         assert_eq!(
             check::check_mapping(&od, 0x1301, Direction::Receive, SRDO_GRANULARITY),
             Ok(8),
