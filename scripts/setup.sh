@@ -4,6 +4,8 @@
 #
 #   scripts/setup.sh            everything (tests)
 #   scripts/setup.sh --demo     only what the demo needs (cmake, C compiler)
+#   scripts/setup.sh --evidence only what scripts/evidence.sh needs (coverage,
+#                               mutation testing, plots)
 set -euo pipefail
 
 MODE="${1:-all}"
@@ -12,6 +14,9 @@ MODE="${1:-all}"
 CBINDGEN_VERSION=0.29.4
 PY_CANOPEN_VERSION=2.4.1
 PY_CAN_VERSION=4.6.1
+LLVM_COV_VERSION=0.9.1
+MUTANTS_VERSION=27.1.0
+MATPLOTLIB_VERSION=3.11.2
 
 log() { printf '[setup] %s\n' "$*"; }
 
@@ -42,6 +47,29 @@ fi
 apt_install cmake make gcc libc6-dev python3 python3-pip
 if [ "$MODE" = "--demo" ]; then
     log "demo prerequisites present"
+    exit 0
+fi
+
+if [ "$MODE" = "--evidence" ]; then
+    for tc in stable nightly; do
+        if ! rustup component list --installed --toolchain "$tc" 2>/dev/null | grep -q '^llvm-tools'; then
+            log "rustup: llvm-tools-preview ($tc)"
+            rustup component add llvm-tools-preview --toolchain "$tc"
+        fi
+    done
+    if ! cargo llvm-cov --version 2>/dev/null | grep -q "$LLVM_COV_VERSION"; then
+        log "cargo install cargo-llvm-cov $LLVM_COV_VERSION"
+        cargo install cargo-llvm-cov --version "$LLVM_COV_VERSION" --locked --quiet
+    fi
+    if ! cargo mutants --version 2>/dev/null | grep -q "$MUTANTS_VERSION"; then
+        log "cargo install cargo-mutants $MUTANTS_VERSION"
+        cargo install cargo-mutants --version "$MUTANTS_VERSION" --locked --quiet
+    fi
+    if ! python3 -c "import matplotlib, sys; sys.exit(0 if matplotlib.__version__ == '$MATPLOTLIB_VERSION' else 1)" 2>/dev/null; then
+        log "pip: matplotlib $MATPLOTLIB_VERSION"
+        python3 -m pip install --quiet --disable-pip-version-check "matplotlib==$MATPLOTLIB_VERSION"
+    fi
+    log "evidence prerequisites present"
     exit 0
 fi
 

@@ -25,6 +25,7 @@ run_stage() {
         stage "format and lints"
         cargo fmt --all -- --check
         scripts/layers.sh
+        scripts/evidence.sh trace-check
         cargo clippy --all-targets -- -D warnings
         cargo clippy --lib --no-default-features -- -D warnings
         cargo clippy --lib --features srdo-static-mapping,srdo-granularity-16,pdo-bit-mapping,pdo-granularity-64 -- -D warnings

@@ -28,6 +28,7 @@ fn send_pair(net: &mut Net, a: u16, b: u16) {
     assert_eq!(r, Ok(()));
 }
 
+// req: M-2.5.2-RECEIVE
 #[test]
 fn valid_pair_end_to_end() {
     let mut net = Net::operational();
@@ -83,11 +84,13 @@ fn check_error(frames: &[(u16, &[u8])], gap_ticks: u32, code: CopKernel) {
     assert_eq!(net.consumer_values(), [1, 2, 3, 4], "variables untouched");
 }
 
+// req: SB-5-DLC
 #[test]
 fn dlc_of_first_frame_not_valid() {
     check_error(&[(0x101, &[1, 2, 3])], 1, CopKernel::SrdoDlcNotValid);
 }
 
+// req: SB-5-DLC
 #[test]
 fn dlc_of_second_frame_not_valid() {
     check_error(
@@ -97,6 +100,7 @@ fn dlc_of_second_frame_not_valid() {
     );
 }
 
+// req: M-1.1-ORDER
 #[test]
 fn inverted_frame_without_normal_frame_is_not_in_order() {
     check_error(
@@ -106,6 +110,7 @@ fn inverted_frame_without_normal_frame_is_not_in_order() {
     );
 }
 
+// req: M-1.1-ORDER
 #[test]
 fn two_normal_frames_in_a_row_are_not_in_order() {
     check_error(
@@ -115,6 +120,7 @@ fn two_normal_frames_in_a_row_are_not_in_order() {
     );
 }
 
+// req: M-1.1-INVERTED
 #[test]
 fn bit_not_inverted_is_a_data_error() {
     check_error(
@@ -124,6 +130,7 @@ fn bit_not_inverted_is_a_data_error() {
     );
 }
 
+// req: M-1.1-SRVT
 #[test]
 fn second_frame_after_srvt_is_a_timeout() {
     // SRVT 20 ms = 200 ticks; 201 ticks between the frames, one cycle for
@@ -135,6 +142,7 @@ fn second_frame_after_srvt_is_a_timeout() {
     );
 }
 
+// req: M-1.1-SRVT
 #[test]
 fn second_frame_exactly_at_srvt_is_valid() {
     let mut net = Net::operational();
@@ -146,6 +154,7 @@ fn second_frame_exactly_at_srvt_is_valid() {
     assert_eq!(net.consumer_values(), [1, 2, 0xFFFE, 0xFFFD]);
 }
 
+// req: SB-5-SRVT-SWITCH
 #[test]
 fn srvt_with_a_cycle_between_the_frames_follows_the_switch() {
     // SRDO_CHECK_SRVT_BEFORE_1STRX (manual 2.4): FALSE (default) finds the
@@ -174,6 +183,7 @@ fn srvt_with_a_cycle_between_the_frames_follows_the_switch() {
     assert_eq!(net.consumer_values(), [0, 0, 0, 0]);
 }
 
+// req: M-1.1-SCT
 #[test]
 fn sct_runs_from_entering_operational_and_reports_once() {
     let mut net = Net::operational();
@@ -202,6 +212,7 @@ fn sct_runs_from_entering_operational_and_reports_once() {
     );
 }
 
+// req: M-1.1-SCT
 #[test]
 fn sct_boundary_between_pairs() {
     let mut net = Net::operational();
@@ -227,6 +238,7 @@ fn sct_boundary_between_pairs() {
     assert_eq!(net.consumer_values(), [3, 3, !3, !3]);
 }
 
+// req: SB-5-OVERRUN
 #[test]
 fn receive_overrun_is_reported_before_the_frames() {
     // The consumer's driver holds two frames; a third is lost.
@@ -247,6 +259,7 @@ fn receive_overrun_is_reported_before_the_frames() {
     assert_eq!(net.c.seen_in_error, vec![(CopKernel::SrdoOverrun, 0x50)]);
 }
 
+// req: M-2.9.2-APPERROR, M-2.5.3-STATUS
 #[test]
 fn error_not_handled_by_the_application() {
     let mut net = Net::operational();
@@ -262,6 +275,7 @@ fn error_not_handled_by_the_application() {
     assert_eq!(net.c.status(IDX), 0x50, "bits 6-7 still 01");
 }
 
+// req: M-2.9.2-APPERROR
 #[test]
 fn two_errors_in_one_frame_each_see_the_prepared_status() {
     // A late first frame while another is held: SCT timeout, then not in
@@ -289,6 +303,7 @@ fn two_errors_in_one_frame_each_see_the_prepared_status() {
     assert_eq!(net.c.status(IDX), 0xB0);
 }
 
+// req: SB-5-WRAP
 #[test]
 fn pair_across_the_tick_counter_wrap() {
     let mut net = Net::preoperational();
@@ -313,6 +328,7 @@ fn pair_across_the_tick_counter_wrap() {
     );
 }
 
+// req: SB-5-FOREIGN
 #[test]
 fn remote_frames_and_foreign_ids_are_ignored() {
     let mut net = Net::operational();

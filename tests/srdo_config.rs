@@ -22,6 +22,7 @@ fn reseal(n: &mut Node) -> Result<(), OdError> {
     n.seal()
 }
 
+// req: SB-2-OPERATIONAL-WRITE
 #[test]
 fn every_write_is_refused_while_operational() {
     let mut net = Net::operational();
@@ -47,6 +48,7 @@ fn every_write_is_refused_while_operational() {
     assert_eq!(net.p.read(0x1301, 2), 25);
 }
 
+// req: SB-2-INVALIDATE, M-1.2-CFGVALID
 #[test]
 fn accepted_safety_write_invalidates_the_configuration() {
     let mut net = Net::preoperational();
@@ -62,6 +64,7 @@ fn accepted_safety_write_invalidates_the_configuration() {
     assert_eq!(net.p.read(0x13FE, 0), 0xA5);
 }
 
+// req: SB-2-OPERATIONAL-WRITE
 #[test]
 fn refused_writes_change_nothing() {
     let mut net = Net::preoperational();
@@ -116,6 +119,7 @@ fn refused_writes_change_nothing() {
     assert_eq!(net.p.read(0x1301, 5), 0x103);
 }
 
+// req: SB-1-TTYPE
 #[test]
 fn transmission_type_is_constant_254() {
     let mut net = Net::preoperational();
@@ -127,6 +131,7 @@ fn transmission_type_is_constant_254() {
     );
 }
 
+// req: M-1.2-CFGVALID
 #[test]
 fn config_valid_runs_the_check_and_keeps_its_value_on_failure() {
     let mut net = Net::preoperational();
@@ -161,6 +166,7 @@ fn check_after(n: &mut Node, writes: &[Write]) -> Result<(), OdError> {
     reseal(n)
 }
 
+// req: M-2.8.2-CHECK, SB-2-ORDER
 #[test]
 fn check_codes_over_the_write_path() {
     let cases: Vec<(Vec<Write>, CopKernel, u16)> = vec![
@@ -208,6 +214,7 @@ fn check_codes_over_the_write_path() {
 }
 
 #[cfg(not(feature = "srdo-static-mapping"))]
+// req: SB-2-MAPPING
 #[test]
 fn mapping_rules_over_the_write_path() {
     let mut net = Net::preoperational();
@@ -290,6 +297,7 @@ fn mapping_rules_over_the_write_path() {
     ));
 }
 
+// req: SB-2-RUN-ONLY-VALID
 #[test]
 fn invalid_configuration_does_not_run_when_operational() {
     let mut net = Net::preoperational();
@@ -303,6 +311,7 @@ fn invalid_configuration_does_not_run_when_operational() {
     assert_eq!(net.consumer_values(), [0, 0, 0, 0]);
 }
 
+// req: M-2.8.8-CALCCRC
 #[test]
 fn calc_crc_and_mapped_len_through_the_stack() {
     let net = Net::preoperational();

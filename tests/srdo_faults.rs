@@ -18,6 +18,7 @@ use cop::sim::{Delivery, SimBus};
 /// The seed of the test command's campaign (any seed must pass).
 const SEED: u64 = 0x5EED_0304;
 
+// req: M-1.1-FAULTS
 #[test]
 fn campaign_detects_every_fault_without_false_alarms() {
     // Miri checks the simulator for undefined behaviour only; the

@@ -55,6 +55,7 @@ fn write(s: &mut Stack, index: u16, sub: u8, v: u32, len: usize, bus: &SimBus) {
     .unwrap();
 }
 
+// req: M-2.5.2-RECEIVE
 #[test]
 fn srdo_cob_ids_changed_in_preoperational_are_received() {
     let _guard = support::serial_guard();

@@ -11,6 +11,7 @@ use support::*;
 
 const IDX: u16 = 0x1301;
 
+// req: SB-9-LEAVE
 #[test]
 fn leaving_operational_stops_everything_at_once() {
     let mut net = Net::operational();
@@ -42,6 +43,7 @@ fn leaving_operational_stops_everything_at_once() {
     );
 }
 
+// req: SB-8-RESET
 #[test]
 fn entering_operational_resets_every_status_byte() {
     let mut net = Net::operational();
@@ -57,6 +59,7 @@ fn entering_operational_resets_every_status_byte() {
     assert_eq!(net.c.status(0x1302), 0);
 }
 
+// req: SB-9-LEAVE
 #[test]
 fn stopped_node_ignores_srdos() {
     let mut net = Net::operational();
@@ -70,6 +73,7 @@ fn stopped_node_ignores_srdos() {
     assert_eq!(net.p.send(IDX).0, Err(CopKernel::SrdoNmtError));
 }
 
+// req: SB-9-RESETCOMM
 #[test]
 fn reset_communication_reloads_the_defaults() {
     let mut net = Net::preoperational();
@@ -84,6 +88,7 @@ fn reset_communication_reloads_the_defaults() {
     assert_eq!(net.p.read(0x13FE, 0), 0, "0x13FE default: invalid");
 }
 
+// req: M-2.5.4-PROGMON
 #[test]
 fn program_monitor_order_in_one_cycle() {
     if !cop::config::SRDO_USE_PROGMONITOR {
@@ -143,6 +148,7 @@ fn program_monitor_order_in_one_cycle() {
 mod gfc {
     use super::*;
 
+    // req: M-1.3-GFC
     #[test]
     fn send_gfc_only_when_enabled_and_operational() {
         let mut net = Net::preoperational();
@@ -162,6 +168,7 @@ mod gfc {
         assert_eq!(srdo_only(&net.c.cycle())[0], Event::Gfc);
     }
 
+    // req: SB-6-GFC-OFF, M-1.3-GFC
     #[test]
     fn gfc_off_refuses_sending_and_ignores_reception() {
         let mut net = Net::operational();
@@ -176,6 +183,7 @@ mod gfc {
         assert_eq!(net.c.stack.srdo().gfc_ignored(), 1);
     }
 
+    // req: M-1.3-GFC
     #[test]
     fn gfc_received_in_pre_operational_and_wrong_dlc_ignored() {
         let mut net = Net::preoperational();

@@ -12,6 +12,7 @@ use support::*;
 
 const IDX: u16 = 0x1301;
 
+// req: M-2.8.1-SEND
 #[test]
 fn refused_before_operational_with_nmt_error() {
     let mut net = Net::preoperational();
@@ -25,6 +26,7 @@ fn refused_before_operational_with_nmt_error() {
     );
 }
 
+// req: M-2.5.1-FIRST-DELAY
 #[test]
 fn first_send_waits_half_a_millisecond_per_node_id() {
     // Manual 2.5.1: the first transmission after entering OPERATIONAL is
@@ -41,6 +43,7 @@ fn first_send_waits_half_a_millisecond_per_node_id() {
     assert_eq!(net.bus.trace().len(), 2);
 }
 
+// req: M-2.8.1-SEND, SB-2-RUN-ONLY-VALID
 #[test]
 fn refused_with_invalid_configuration() {
     let mut net = Net::preoperational();
@@ -54,6 +57,7 @@ fn refused_with_invalid_configuration() {
     assert!(net.bus.trace().is_empty());
 }
 
+// req: M-2.8.1-SEND
 #[test]
 fn refused_for_a_receive_srdo_a_disabled_srdo_and_an_unknown_index() {
     let mut net = Net::operational();
@@ -66,6 +70,7 @@ fn refused_for_a_receive_srdo_a_disabled_srdo_and_an_unknown_index() {
     assert!(net.bus.trace().is_empty());
 }
 
+// req: SB-4-COMPLEMENT
 #[test]
 fn data_not_inverted_is_not_sent() {
     // Manual 2.8.1: every bit is checked before sending; on a mismatch no
@@ -84,6 +89,7 @@ fn data_not_inverted_is_not_sent() {
     assert_eq!(net.p.status(IDX), 0xB0);
 }
 
+// req: SB-4-DRIVER
 #[test]
 fn driver_refusal_is_reported_with_the_driver_code() {
     let mut net = Net::operational();
@@ -108,6 +114,7 @@ fn driver_refusal_is_reported_with_the_driver_code() {
     assert_eq!(net.p.status(IDX) & 0x30, 0x30);
 }
 
+// req: SB-4-ALL
 #[test]
 fn send_all_iterates_the_transmit_srdos() {
     let mut net = Net::operational();
@@ -124,6 +131,7 @@ fn send_all_iterates_the_transmit_srdos() {
     assert_eq!(net.bus.trace().len(), 2);
 }
 
+// req: SB-4-REFRESH
 #[test]
 fn missed_refresh_time_goes_to_the_program_monitor_once() {
     if !cop::config::SRDO_USE_PROGMONITOR {

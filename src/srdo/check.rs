@@ -112,7 +112,7 @@ fn check_object(
 }
 
 /// Checks the mapping of an active SRDO; returns the normal data length.
-fn check_mapping(
+pub(super) fn check_mapping(
     od: &ObjectDictionary,
     commu_index: u16,
     direction: Direction,

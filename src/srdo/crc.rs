@@ -123,6 +123,7 @@ pub fn stream_bytes(
 mod tests {
     use super::*;
 
+    // req: SB-3-CRC-VECTORS
     #[test]
     fn xmodem_check_value() {
         // SAFETY_BEHAVIOUR.md section 3: CRC-16/XMODEM of "123456789" is 0x31C3.

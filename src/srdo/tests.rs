@@ -4,7 +4,7 @@
 use core::sync::atomic::AtomicU8;
 
 use super::*;
-use crate::od::{Access, DataType, ObdEntry, ObdSubEntry, decl};
+use crate::od::{Access, DataType, ObdEntry, ObdSubEntry, ObdVarEntry, decl};
 use crate::port::{CanFrame, CanId};
 
 static NORMAL: [AtomicU8; 8] = decl::zeroed();
@@ -15,6 +15,16 @@ static U32_VAR: [AtomicU8; 4] = decl::zeroed();
 static U32_VAR_I: [AtomicU8; 4] = decl::zeroed();
 static WIDE_N: [AtomicU8; 4] = decl::zeroed();
 static WIDE_I: [AtomicU8; 4] = decl::zeroed();
+#[cfg_attr(srdo_static_mapping, allow(dead_code))]
+static ODD_N: [AtomicU8; 3] = decl::zeroed();
+#[cfg_attr(srdo_static_mapping, allow(dead_code))]
+static SHORT_N: [AtomicU8; 2] = decl::zeroed();
+#[cfg_attr(srdo_static_mapping, allow(dead_code))]
+static FIT_N: [AtomicU8; 4] = decl::zeroed();
+#[cfg_attr(srdo_static_mapping, allow(dead_code))]
+static FIT_I: [AtomicU8; 4] = decl::zeroed();
+static E6600_1: ObdVarEntry = ObdVarEntry::new();
+static E6600_2: ObdVarEntry = ObdVarEntry::new();
 
 const fn part(buf: &'static [AtomicU8], from: usize, len: usize) -> &'static [AtomicU8] {
     buf.split_at(from).1.split_at(len).0
@@ -76,6 +86,12 @@ static S6500: [ObdSubEntry; 3] = [
     ObdSubEntry::ram(1, DataType::Int24, Access::PRW, &WIDE_N, Some(&[0; 4])),
     ObdSubEntry::ram(2, DataType::Int24, Access::PRW, &WIDE_I, Some(&[0; 4])),
 ];
+// Two UNSIGNED32 whose variables the application attaches (check.rs step 5).
+static S6600: [ObdSubEntry; 3] = [
+    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[2]),
+    ObdSubEntry::var(1, DataType::UInt32, Access::PRW, &E6600_1, 4, None),
+    ObdSubEntry::var(2, DataType::UInt32, Access::PRW, &E6600_2, 4, None),
+];
 
 // The mappings of the three SRDOs are those of SAFETY_BEHAVIOUR.md
 // section 3, so that the CRC vectors hold with static mapping too.
@@ -117,13 +133,14 @@ static GENERIC: [ObdEntry; 11] = [
     crate::srdo_obd_entry!(cfg_valid),
     crate::srdo_obd_entry!(crcs),
 ];
-static DEVICE: [ObdEntry; 6] = [
+static DEVICE: [ObdEntry; 7] = [
     ObdEntry::new(0x6200, &S6200, None),
     ObdEntry::new(0x6201, &S6201, None),
     ObdEntry::new(0x6300, &S6300, None),
     ObdEntry::new(0x6301, &S6301, None),
     ObdEntry::new(0x6400, &S6400, None),
     ObdEntry::new(0x6500, &S6500, None),
+    ObdEntry::new(0x6600, &S6600, None),
 ];
 
 // A dictionary with a gap: SRDO 1 and 3, no SRDO 2.
@@ -241,6 +258,7 @@ fn per_srdo_state_fits_64_bytes() {
     );
 }
 
+// req: SB-3-CRC-VECTORS, M-1.1.3-CRC, M-2.8.8-CALCCRC
 #[test]
 fn crc_vectors_through_calc_crc() {
     // Source: SAFETY_BEHAVIOUR.md section 3, table of public test vectors;
@@ -272,6 +290,7 @@ fn crc_vectors_through_calc_crc() {
     assert_eq!(srdo.calc_crc(&od, 0x1305), Err(CopKernel::SrdoNotExist));
 }
 
+// req: SB-3-CRC-VECTORS
 #[test]
 fn crc_byte_stream_of_row_1() {
     // Source: SAFETY_BEHAVIOUR.md section 3, "Byte stream of the first row".
@@ -332,6 +351,7 @@ fn init_finds_objects_and_refuses_bad_tables() {
     );
 }
 
+// req: M-2.5.3-STATUS
 #[test]
 fn state_byte_api() {
     let (_g, _od, mut srdo) = setup();
@@ -402,6 +422,7 @@ type Frames = &'static [(u16, &'static [u8], u32)];
 #[cfg(not(srdo_static_mapping))]
 mod dynamic {
     use super::*;
+    use crate::config::SRDO_GRANULARITY;
     use crate::event::QUEUE_CAPACITY;
 
     /// SRDO 0x1301: receive, SCT 25 ms, SRVT 20 ms, COB-IDs 0x101/0x102,
@@ -420,6 +441,7 @@ mod dynamic {
         assert!(srdo.is_running());
     }
 
+    // req: M-2.8.2-CHECK, SB-2-ORDER, SB-2-MAPPING, SB-2-LENGTH, M-1.1-COBID
     #[test]
     fn configuration_check_codes_in_order() {
         let (_g, od, srdo) = setup();
@@ -506,6 +528,127 @@ mod dynamic {
         }
     }
 
+    /// The limits of step 5 and 6 at their boundary: `SRDO_MAX_MAPPENTRIES`
+    /// entries (manual 2.4: 128 / granularity) carrying exactly 8 bytes of
+    /// normal data (CiA 304: one SRDO frame holds at most 8 bytes) pass.
+    // req: SB-2-MAPPING, SB-2-LENGTH, M-2.4-GRANULARITY, SB-3-CRC-VECTORS
+    #[test]
+    fn full_mapping_at_the_limits_passes() {
+        let (_g, od, srdo) = setup();
+        receive_config(&od, &srdo);
+        let pairs = u8::try_from(SRDO_MAX_MAPPENTRIES / 2).unwrap();
+        let bits = 64 / u32::from(pairs);
+        assert_eq!(bits, u32::from(SRDO_GRANULARITY), "entries of one granule");
+        set(&od, 0x1381, 0, u64::from(2 * pairs));
+        for pair in 0..pairs {
+            let sub = u32::from(pair % 4) + 1;
+            let normal = 0x6200_0000 | (sub << 8) | bits;
+            let inverted = 0x6300_0000 | (sub << 8) | bits;
+            set(&od, 0x1381, 2 * pair + 1, u64::from(normal));
+            set(&od, 0x1381, 2 * pair + 2, u64::from(inverted));
+        }
+        seal(&od, &srdo);
+        assert_eq!(srdo.check_config(&od), Ok(()));
+        // The CRC over the longest byte stream, built field by field as
+        // SAFETY_BEHAVIOUR.md section 3 lays it out (direction, SCT, SRVT,
+        // COB-IDs little-endian, count, then subindex + entry per entry).
+        let mut bytes = vec![2u8, 25, 0, 20];
+        bytes.extend_from_slice(&0x101u32.to_le_bytes());
+        bytes.extend_from_slice(&0x102u32.to_le_bytes());
+        bytes.push(2 * pairs);
+        for sub in 1..=2 * pairs {
+            bytes.push(sub);
+            bytes.extend_from_slice(&u32::try_from(get(&od, 0x1381, sub)).unwrap().to_le_bytes());
+        }
+        assert_eq!(bytes.len(), 13 + 5 * SRDO_MAX_MAPPENTRIES);
+        assert_eq!(srdo.calc_crc(&od, 0x1301), Ok(crc::crc16(&bytes)));
+        let mut buf = [0u8; crc::MAX_STREAM];
+        let n = crc::stream_bytes(&od, 0x1301, &mut buf).unwrap();
+        assert_eq!(&buf[..n], &bytes[..], "the diagnostic copy holds all of it");
+        assert_eq!(
+            check::check_mapping(&od, 0x1301, Direction::Receive, SRDO_GRANULARITY),
+            Ok(8),
+            "the normal data length in bytes"
+        );
+        // One byte less: 7 bytes.
+        set(&od, 0x1381, 0, u64::from(2 * pairs - 2));
+        assert_eq!(
+            check::check_mapping(&od, 0x1301, Direction::Receive, SRDO_GRANULARITY),
+            Ok(7)
+        );
+        // One byte more than a frame (the first pair widened to 16 bits).
+        set(&od, 0x1381, 0, u64::from(2 * pairs));
+        set(&od, 0x1381, 1, 0x6201_0110);
+        set(&od, 0x1381, 2, 0x6301_0110);
+        seal(&od, &srdo);
+        assert_eq!(
+            srdo.check_config(&od),
+            Err((CopKernel::SrdoLengthExceeded, 0x1301))
+        );
+    }
+
+    /// An attached variable must exist and be 1, 2, 4 or 8 bytes wide and
+    /// at least as wide as the object's type (check.rs step 5).
+    // req: SB-2-MAPPING
+    #[test]
+    fn attached_variables_of_the_wrong_size_are_refused() {
+        let (_g, od, srdo) = setup();
+        receive_config(&od, &srdo);
+        set(&od, 0x1381, 1, 0x6600_0120);
+        set(&od, 0x1381, 2, 0x6600_0220);
+        seal(&od, &srdo);
+        let refused = Err((CopKernel::SrdoErrorMapp, 0x1301));
+        // No variable attached yet.
+        assert_eq!(srdo.check_config(&od), refused);
+        assert!(E6600_2.attach(&FIT_I));
+        // 2 bytes: a native size, but narrower than UNSIGNED32.
+        assert!(E6600_1.attach(&SHORT_N));
+        assert_eq!(srdo.check_config(&od), refused);
+        // 3 bytes: wide enough, but no native size.
+        assert!(E6600_1.attach(&ODD_N));
+        assert_eq!(srdo.check_config(&od), refused);
+        assert!(E6600_1.attach(&FIT_N));
+        assert_eq!(srdo.check_config(&od), Ok(()));
+    }
+
+    /// Dummy entries (CiA 301 data type indices 0x0001..0x0007): only sub 0,
+    /// only the size of their type, only in receive SRDOs, only with
+    /// `SRDO_USE_DUMMY_MAPPING` (manual 2.4).
+    // req: M-2.4-DUMMY
+    #[test]
+    fn dummy_entries_only_as_the_manual_allows() {
+        let (_g, od, srdo) = setup();
+        let dummy = crate::config::SRDO_USE_DUMMY_MAPPING;
+        let cases: &[(u8, u32, u32, bool)] = &[
+            // direction, normal entry, inverted entry, accepted with dummies
+            (2, 0x0006_0010, 0x0006_0010, true),
+            (2, 0x0005_0008, 0x0002_0008, true),
+            (2, 0x0006_0110, 0x0006_0110, false),
+            (2, 0x0006_0008, 0x0006_0008, false),
+            (2, 0x0007_0010, 0x0007_0010, false),
+            (1, 0x0006_0010, 0x0006_0010, false),
+        ];
+        for &(direction, normal, inverted, ok) in cases {
+            od.restore_defaults(0x1000, 0x1FFF);
+            receive_config(&od, &srdo);
+            set(&od, 0x1301, 1, u64::from(direction));
+            set(&od, 0x1381, 1, u64::from(normal));
+            set(&od, 0x1381, 2, u64::from(inverted));
+            seal(&od, &srdo);
+            let expected = if ok && dummy {
+                Ok(())
+            } else {
+                Err((CopKernel::SrdoErrorMapp, 0x1301))
+            };
+            assert_eq!(
+                srdo.check_config(&od),
+                expected,
+                "direction {direction}, {normal:#x}/{inverted:#x}"
+            );
+        }
+    }
+
+    // req: SB-2-DUPLICATE, M-2.4-GRANULARITY
     #[test]
     fn duplicate_cob_ids_and_granularity() {
         let (_g, od, srdo) = setup();
@@ -559,6 +702,7 @@ mod dynamic {
         assert!(p.vars[2].is_none());
     }
 
+    // req: M-2.5.2-RECEIVE
     #[test]
     fn valid_pair_writes_both_variables_and_reports() {
         let (_g, od, mut srdo) = setup();
@@ -688,6 +832,7 @@ mod dynamic {
         }
     }
 
+    // req: SB-5-NO-WRITE-ON-ERROR, M-2.5.3-STATUS
     #[test]
     fn errors_leave_variables_untouched_and_set_status() {
         let (_g, od, mut srdo) = setup();
@@ -743,6 +888,7 @@ mod dynamic {
         }
     }
 
+    // req: M-1.1-SRVT, M-1.1-SCT
     #[test]
     fn srvt_boundary_and_sct_boundary() {
         let (_g, od, mut srdo) = setup();
@@ -807,6 +953,7 @@ mod dynamic {
         }
     }
 
+    // req: M-1.1-SCT
     #[test]
     fn sct_timeouts_of_several_srdos_at_their_own_ticks() {
         for switch in [false, true] {
@@ -859,6 +1006,7 @@ mod dynamic {
         }
     }
 
+    // req: SB-5-SRVT-SWITCH
     #[test]
     fn srvt_checked_before_second_frame_both_settings() {
         for switch in [false, true] {
@@ -911,6 +1059,7 @@ mod dynamic {
 mod static_mapping {
     use super::*;
 
+    // req: M-2.12.1-STATIC-FIELDS
     #[test]
     fn var_fields_must_match_the_mapping() {
         let (_g, od, mut srdo) = setup();
@@ -950,6 +1099,7 @@ mod static_mapping {
         );
     }
 
+    // req: M-2.12.1-STATIC-FIELDS
     #[test]
     fn active_srdo_without_fields_fails_the_check() {
         let (_g, od, mut srdo) = setup();
@@ -1044,6 +1194,7 @@ mod sixty_four {
         a
     }
 
+    // req: M-1.5-SIXTYFOUR
     #[test]
     fn sixty_four_receive_srdos() {
         let _g = SERIAL.lock().unwrap_or_else(|e| e.into_inner());

@@ -196,6 +196,7 @@ pub fn is_valid_gfc(frame: &CanFrame) -> bool {
 mod tests {
     use super::*;
 
+    // req: M-1.4-PREDEF
     #[test]
     fn predefined_connection_set_matches_manual_table_8() {
         // Manual L-1077d table 8: node 1 -> 0x101/0x102, node 32 -> 0x13F/0x140,
@@ -213,6 +214,7 @@ mod tests {
         assert_eq!(SrdoCobIds::predefined(65), None);
     }
 
+    // req: M-1.1-COBID
     #[test]
     fn cob_id_rules_of_manual_1_1_1() {
         assert!(SrdoCobIds::new(0x101, 0x102).is_ok());
@@ -260,6 +262,7 @@ mod tests {
         assert_eq!(classify(CanId::ext(0x101).unwrap()), None);
     }
 
+    // req: M-1.1-INVERTED
     #[test]
     fn complement_check_is_bitwise_over_dlc_bytes() {
         assert!(is_complement(0x0000_1234, 0xFFFF_EDCB, 2));
@@ -275,6 +278,7 @@ mod tests {
         );
     }
 
+    // req: M-1.1-ORDER, M-1.1-INVERTED
     #[test]
     fn encode_puts_normal_then_inverted_with_equal_dlc() {
         let ids = SrdoCobIds::new(0x101, 0x102).unwrap();
@@ -288,6 +292,7 @@ mod tests {
         assert_eq!(payload_u64(&f2), 0x4110);
     }
 
+    // req: M-1.3-GFC
     #[test]
     fn gfc_is_id_1_without_data() {
         let f = encode_gfc();

@@ -1,0 +1,77 @@
+#!/usr/bin/env python3
+"""Combines the cargo-mutants runs of scripts/evidence.sh (one output folder
+per file and switch configuration) into one result per mutant: caught when
+any configuration that builds it catches it. Survivors are compared with the
+equivalent mutants listed, with their argument, in EQUIV; a survivor not
+listed there fails (exit 1).
+
+  mutants.py RUNS_DIR OUT_JSON EQUIV_TOML
+"""
+import json
+import pathlib
+import re
+import sys
+import tomllib
+
+RANK = {"caught": 3, "timeout": 2, "missed": 1, "unviable": 0}
+LOC = re.compile(r"^(?P<file>[^:]+):(?P<line>\d+):(?P<col>\d+): (?P<what>.*)$")
+
+
+def key(text):
+    m = LOC.match(text.strip())
+    return (m.group("file"), m.group("what"), int(m.group("line"))) if m else None
+
+
+def main():
+    runs, out_json, equiv_path = sys.argv[1:4]
+    equiv = {}
+    p = pathlib.Path(equiv_path)
+    if p.exists():
+        for e in tomllib.loads(p.read_text()).get("equivalent", []):
+            equiv[(e["file"], e["mutant"])] = e["argument"]
+    mutants, configs = {}, {}
+    for d in sorted(pathlib.Path(runs).glob("*/mutants.out")):
+        run = d.parent.name
+        configs[run] = {}
+        for outcome in RANK:
+            f = d / f"{outcome}.txt"
+            if not f.exists():
+                continue
+            for line in f.read_text().splitlines():
+                k = key(line)
+                if k is None:
+                    continue
+                configs[run][outcome] = configs[run].get(outcome, 0) + 1
+                prev = mutants.get(k)
+                if prev is None or RANK[outcome] > RANK[prev["outcome"]]:
+                    mutants[k] = {"outcome": outcome, "run": run}
+    per_file, survivors, unexplained = {}, [], []
+    for (file, what, line), m in sorted(mutants.items()):
+        s = per_file.setdefault(file, {o: 0 for o in RANK} | {"equivalent": 0})
+        o = m["outcome"]
+        if o == "missed" and (file, what) in equiv:
+            o = "equivalent"
+        s[o] += 1
+        if m["outcome"] == "missed":
+            entry = {"file": file, "line": line, "mutant": what,
+                     "argument": equiv.get((file, what))}
+            survivors.append(entry)
+            if entry["argument"] is None:
+                unexplained.append(entry)
+    tot = {o: sum(s[o] for s in per_file.values()) for o in list(RANK) + ["equivalent"]}
+    viable = tot["caught"] + tot["timeout"] + tot["missed"] + tot["equivalent"]
+    score = 100.0 * (tot["caught"] + tot["timeout"]) / viable if viable else 0.0
+    score_eq = (100.0 * (tot["caught"] + tot["timeout"]) / (viable - tot["equivalent"])
+                if viable - tot["equivalent"] else 0.0)
+    result = {"runs": configs, "files": per_file, "total": tot, "score": score,
+              "score_without_equivalent": score_eq, "survivors": survivors}
+    pathlib.Path(out_json).write_text(json.dumps(result, indent=1) + "\n")
+    print(f"mutants: {viable} viable, {tot['caught'] + tot['timeout']} caught ({score:.1f} %), "
+          f"{tot['equivalent']} equivalent, {len(unexplained)} unexplained survivors")
+    for u in unexplained:
+        print(f"  survivor: {u['file']}:{u['line']}: {u['mutant']}")
+    sys.exit(1 if unexplained else 0)
+
+
+if __name__ == "__main__":
+    main()
