@@ -117,6 +117,30 @@ pub fn with<R>(f: impl FnOnce(&mut Instance) -> R) -> Result<R, CopKernel> {
     r
 }
 
+/// [`with`] for the SRDO status byte of `commu_index`, inlined into
+/// `CcmGetSrdoState` / `CcmSetSrdoState`: runs `f` on the byte and returns
+/// kCopSuccessful, or the same errors as [`with`] (kCopNoResource for a
+/// nested call, kCopIllegalInstance before `CcmInitCANopen`), then
+/// kCopSrdoNotExist for an index that is not an SRDO.
+#[inline(always)]
+pub fn with_srdo_status(commu_index: u16, f: impl FnOnce(&mut u8)) -> tCopKernel {
+    if GLOBAL.busy.replace(true) {
+        return CopKernel::NoResource.code();
+    }
+    let r = match instance() {
+        Some(i) => match i.stack.srdo_mut().status_mut(commu_index) {
+            Some(s) => {
+                f(s);
+                CopKernel::Successful.code()
+            }
+            None => CopKernel::SrdoNotExist.code(),
+        },
+        None => CopKernel::IllegalInstance.code(),
+    };
+    GLOBAL.busy.set(false);
+    r
+}
+
 /// Installs a new instance; `Err(kCopNoFreeInstance)` if one exists,
 /// `Err(kCopNoResource)` for a nested call.
 pub fn install(i: Instance) -> Result<(), CopKernel> {
