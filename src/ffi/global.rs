@@ -106,6 +106,12 @@ pub fn select(index: usize) -> bool {
 /// `Err(kCopIllegalInstance)` before `CcmInitCANopen`, `Err(kCopNoResource)`
 /// for a nested call.
 pub fn with<R>(f: impl FnOnce(&mut Instance) -> R) -> Result<R, CopKernel> {
+    with_inline(f)
+}
+
+/// [`with`], inlined into its caller (the pump, once per event).
+#[inline(always)]
+fn with_inline<R>(f: impl FnOnce(&mut Instance) -> R) -> Result<R, CopKernel> {
     if GLOBAL.busy.replace(true) {
         return Err(CopKernel::NoResource);
     }
@@ -240,7 +246,7 @@ fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Optio
     let mut not_handled = false;
     loop {
         let now = TgtClock.now();
-        let step = with(|i| next(i, now).map(|e| (e, i.callbacks)));
+        let step = with_inline(|i| next(i, now).map(|e| (e, i.callbacks)));
         match step {
             Ok(Some((e, cbs))) => {
                 not_handled |= matches!(e, Event::SrdoError(_, CopKernel::SrdoNotHandledInApp));
