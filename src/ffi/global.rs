@@ -108,12 +108,42 @@ pub fn select(index: usize) -> bool {
 /// `Err(kCopIllegalInstance)` before `CcmInitCANopen`, `Err(kCopNoResource)`
 /// for a nested call.
 pub fn with<R>(f: impl FnOnce(&mut Instance) -> R) -> Result<R, CopKernel> {
+    with_inline(f)
+}
+
+/// [`with`], inlined into its caller (the pump, once per event).
+#[inline(always)]
+fn with_inline<R>(f: impl FnOnce(&mut Instance) -> R) -> Result<R, CopKernel> {
     if GLOBAL.busy.replace(true) {
         return Err(CopKernel::NoResource);
     }
     let r = match instance() {
         Some(i) => Ok(f(i)),
         None => Err(CopKernel::IllegalInstance),
+    };
+    GLOBAL.busy.set(false);
+    r
+}
+
+/// [`with`] for the SRDO status byte of `commu_index`, inlined into
+/// `CcmGetSrdoState` / `CcmSetSrdoState`: runs `f` on the byte and returns
+/// kCopSuccessful, or the same errors as [`with`] (kCopNoResource for a
+/// nested call, kCopIllegalInstance before `CcmInitCANopen`), then
+/// kCopSrdoNotExist for an index that is not an SRDO.
+#[inline(always)]
+pub fn with_srdo_status(commu_index: u16, f: impl FnOnce(&mut u8)) -> tCopKernel {
+    if GLOBAL.busy.replace(true) {
+        return CopKernel::NoResource.code();
+    }
+    let r = match instance() {
+        Some(i) => match i.stack.srdo_mut().status_mut(commu_index) {
+            Some(s) => {
+                f(s);
+                CopKernel::Successful.code()
+            }
+            None => CopKernel::SrdoNotExist.code(),
+        },
+        None => CopKernel::IllegalInstance.code(),
     };
     GLOBAL.busy.set(false);
     r
@@ -218,7 +248,7 @@ fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Optio
     let mut not_handled = false;
     loop {
         let now = TgtClock.now();
-        let step = with(|i| next(i, now).map(|e| (e, i.callbacks)));
+        let step = with_inline(|i| next(i, now).map(|e| (e, i.callbacks)));
         match step {
             Ok(Some((e, cbs))) => {
                 not_handled |= matches!(e, Event::SrdoError(_, CopKernel::SrdoNotHandledInApp));

@@ -143,13 +143,7 @@ pub unsafe extern "C" fn CcmGetSrdoState(
 ) -> tCopKernel {
     // SAFETY: the caller's contract (NULL or a writable byte).
     let out = c_try!(unsafe { ptr::out(pbSrdoState_p) });
-    match global::with(|i| i.stack.srdo().get_state(wSrdoCommuIndex_p)) {
-        Ok(Ok(s)) => {
-            out.set(s);
-            0
-        }
-        Ok(Err(e)) | Err(e) => e.code(),
-    }
+    global::with_srdo_status(wSrdoCommuIndex_p, |s| out.set(*s))
 }
 
 /// `SrdoGetState`: the module function behind `CcmGetSrdoState`.
@@ -169,11 +163,9 @@ pub unsafe extern "C" fn SrdoGetState(
 /// reserved and stay 0). kCopSrdoNotExist.
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmSetSrdoState(bSrdoState_p: BYTE, wSrdoCommuIndex_p: WORD) -> tCopKernel {
-    code(global::with(|i| {
-        i.stack
-            .srdo_mut()
-            .set_state(wSrdoCommuIndex_p, bSrdoState_p)
-    }))
+    global::with_srdo_status(wSrdoCommuIndex_p, |s| {
+        *s = crate::srdo::merge_state(*s, bSrdoState_p);
+    })
 }
 
 /// `SrdoSetState`: the module function behind `CcmSetSrdoState`.

@@ -306,6 +306,13 @@ pub(crate) fn read_u32(od: &ObjectDictionary, index: u16, sub: u8) -> Option<u32
     od.read_uint(index, sub).ok().map(|v| v as u32)
 }
 
+/// The status byte after `CcmSetSrdoState(value)`: bits 4-7 from `value`,
+/// the reserved bits 0-3 unchanged (0).
+#[inline(always)]
+pub fn merge_state(old: u8, value: u8) -> u8 {
+    (value & !status::RESERVED_MASK) | (old & status::RESERVED_MASK)
+}
+
 /// The communication index of a slot, if the slot is used.
 fn commu_index_of(slots: &[Slot], slot: usize) -> Option<u16> {
     slots
@@ -1030,10 +1037,27 @@ impl Srdo {
     /// `CcmSetSrdoState`: sets bits 4-7 of the status byte; the reserved
     /// bits 0-3 keep their value (0). `kCopSrdoNotExist` for a bad index.
     pub fn set_state(&mut self, commu_index: u16, value: u8) -> CopResult {
-        let slot = self.slot_for(commu_index)?;
-        let s = self.slots.get_mut(slot).ok_or(CopKernel::SrdoNotExist)?;
-        s.status = (value & !status::RESERVED_MASK) | (s.status & status::RESERVED_MASK);
+        let s = self
+            .status_mut(commu_index)
+            .ok_or(CopKernel::SrdoNotExist)?;
+        *s = merge_state(*s, value);
         Ok(())
+    }
+
+    /// The status byte of an SRDO of this dictionary, `None` for any other
+    /// index: one table look-up and one bounds check (the C API's
+    /// `CcmGetSrdoState` / `CcmSetSrdoState`, called twice per received
+    /// SRDO from `AppSrdoEvent`).
+    #[inline(always)]
+    pub fn status_mut(&mut self, commu_index: u16) -> Option<&mut u8> {
+        // Below 0x1301 the difference wraps far beyond the table; slot
+        // entry 0 (no such SRDO) wraps to usize::MAX, beyond the slots.
+        let s = *self
+            .slot_of_commu
+            .get(usize::from(commu_index.wrapping_sub(COMMU_FIRST)))?;
+        self.slots
+            .get_mut(usize::from(s).wrapping_sub(1))
+            .map(|s| &mut s.status)
     }
 
     /// `SrdoGetCommuParam`: direction and refresh time / SCT as they are in
