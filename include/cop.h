@@ -292,7 +292,10 @@ tCopKernel CcmInitEmccEx(tAppEmccEventCallback pfnCallback_p);
  * (a node twice), or the driver's code from `CdrvDefineCanId`.
  *
  * # Safety
- * `pbProducerTab_p` must be valid for `bNumOfProducer_p` bytes.
+ * `pbProducerTab_p` must be valid for `bNumOfProducer_p` bytes and stay
+ * valid until the next call or `CcmShutDownCANopen`: the table is read
+ * again when the application changes it (README "Tables with free
+ * slots").
  */
 tCopKernel CcmEmccDefineProducerTab(const BYTE *pbProducerTab_p, BYTE bNumOfProducer_p);
 
@@ -313,7 +316,9 @@ tCopKernel CcmInitNmtmEx(tAppNmtmEventCallback pfnCallback_p);
  * kCopNmtmInvalidSlaveNodeId, kCopNmtmSlaveNodeExist.
  *
  * # Safety
- * `pbSlaveTab_p` must be valid for `bNumOfSlaves_p` bytes.
+ * `pbSlaveTab_p` must be valid for `bNumOfSlaves_p` bytes and stay valid
+ * until the next call or `CcmShutDownCANopen`: the table is read again
+ * when the application changes it (README "Tables with free slots").
  */
 tCopKernel CcmDefineSlaveTab(const BYTE *pbSlaveTab_p, BYTE bNumOfSlaves_p);
 

@@ -65,9 +65,9 @@ rule "wire imports a stateful layer" stateful \
 # know the registry.
 rule "C layer base imports an exported function" exported \
     "\\b(crate::ffi|super)::(ccm|master|pdo|services|srdo|dynod|stack_callbacks)\\b" \
-    src/ffi/global.rs src/ffi/callbacks.rs src/ffi/ptr.rs src/ffi/types.rs src/ffi/driver.rs
+    src/ffi/global.rs src/ffi/callbacks.rs src/ffi/ptr.rs src/ffi/types.rs src/ffi/driver.rs src/ffi/tables.rs
 rule "C layer helper imports the registry" global "\\b(crate::ffi|super)::global\\b" \
-    src/ffi/callbacks.rs src/ffi/ptr.rs src/ffi/types.rs src/ffi/driver.rs
+    src/ffi/callbacks.rs src/ffi/ptr.rs src/ffi/types.rs src/ffi/driver.rs src/ffi/tables.rs
 # unsafe is allowed in two modules only (src/lib.rs: ffi, src/od/mod.rs:
 # table); a new allowance elsewhere is a decision for ARCHITECTURE.md.
 allowed=$(grep -rnE 'allow\((unsafe_code)\)' src | grep -vE '^src/lib\.rs:[0-9]+:#\[allow\(unsafe_code\)\]$|^src/od/mod\.rs:[0-9]+:#\[allow\(unsafe_code\)\]$' || true)

@@ -153,7 +153,7 @@ pub extern "C" fn CcmConnectToNet() -> tCopKernel {
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmProcess() -> tCopKernel {
     let r = global::with(|i| {
-        super::master::AppTables::sync(i);
+        i.tables.sync(&mut i.stack, &mut i.port);
         i.stack.begin_cycle()
     });
     if r.is_err() {

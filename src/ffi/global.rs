@@ -29,7 +29,7 @@ pub struct Instance {
     /// The application's callbacks.
     pub callbacks: Callbacks,
     /// The master application's node tables (read again when they change).
-    pub tables: super::master::AppTables,
+    pub tables: super::tables::AppTables,
 }
 
 pub use super::MAX_INSTANCES;

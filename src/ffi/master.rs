@@ -13,69 +13,12 @@ use crate::error::CopKernel;
 use crate::port::Clock;
 use crate::wire::nmt::NmtCs;
 
-/// The node tables of a master application, kept as the application gave
-/// them: `CcmDefineSlaveTab` and `CcmEmccDefineProducerTab` take the
-/// address of an application array (`BYTE GENERIC*`) that the SYS TEC
-/// master applications fill later, slave by slave, after the call (entries
-/// 0 are free). The tables are read again before each `CcmProcess`,
-/// `CcmConfigLgm`, `CcmTriggerNodeGuard` and `CcmNmtmGetSlaveInfo`; a table whose
-/// used entries changed is defined again (nodes listed before keep their
-/// state). A changed table that is refused (an invalid or repeated
-/// node-ID, too many entries) leaves the previous list in force and is
-/// tried again while it differs.
-#[derive(Clone, Copy)]
-pub struct AppTables {
-    slaves: *const BYTE,
-    slave_count: u8,
-    producers: *const BYTE,
-    producer_count: u8,
-}
-
-impl Default for AppTables {
-    fn default() -> Self {
-        AppTables {
-            slaves: core::ptr::null(),
-            slave_count: 0,
-            producers: core::ptr::null(),
-            producer_count: 0,
-        }
-    }
-}
-
-impl AppTables {
-    /// Defines the tables again whose used entries changed since.
-    pub fn sync(i: &mut Instance) {
-        let t = i.tables;
-        if t.slave_count != 0 {
-            // SAFETY: CcmDefineSlaveTab's contract: the table stays valid
-            // for `bNumOfSlaves_p` bytes while it is defined (until the next
-            // CcmDefineSlaveTab or CcmShutDownCANopen), as in the original,
-            // which keeps the pointer.
-            if let Ok(nodes) = unsafe { ptr::slice_or_empty(t.slaves, usize::from(t.slave_count)) }
-            {
-                if !i.stack.nmtm().same_slaves(nodes) {
-                    let _ = i.stack.nmtm_mut().define_slaves(nodes);
-                }
-            }
-        }
-        if t.producer_count != 0 {
-            // SAFETY: CcmEmccDefineProducerTab's contract, as above.
-            if let Ok(nodes) =
-                unsafe { ptr::slice_or_empty(t.producers, usize::from(t.producer_count)) }
-            {
-                if !i.stack.emcc_producers_are(nodes) {
-                    let Instance { stack, port, .. } = i;
-                    let _ = stack.define_emcc_producers(port, nodes);
-                }
-            }
-        }
-    }
-}
+pub use super::tables::AppTables;
 
 /// [`global::with`] after the application's tables were read again.
 fn with_tables<R>(f: impl FnOnce(&mut Instance) -> R) -> Result<R, CopKernel> {
     global::with(|i| {
-        AppTables::sync(i);
+        i.tables.sync(&mut i.stack, &mut i.port);
         f(i)
     })
 }
@@ -115,9 +58,10 @@ pub extern "C" fn CcmInitEmccEx(pfnCallback_p: tAppEmccEventCallback) -> tCopKer
 /// (a node twice), or the driver's code from `CdrvDefineCanId`.
 ///
 /// # Safety
-/// `pbProducerTab_p` must be valid for `bNumOfProducer_p` bytes, and stay
-/// valid while the table is defined ([`AppTables`]: it is read again when
-/// the application changes it).
+/// `pbProducerTab_p` must be valid for `bNumOfProducer_p` bytes and stay
+/// valid until the next call or `CcmShutDownCANopen`: the table is read
+/// again when the application changes it (README "Tables with free
+/// slots").
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmEmccDefineProducerTab(
     pbProducerTab_p: *const BYTE,
@@ -165,9 +109,9 @@ pub extern "C" fn CcmInitNmtmEx(pfnCallback_p: tAppNmtmEventCallback) -> tCopKer
 /// kCopNmtmInvalidSlaveNodeId, kCopNmtmSlaveNodeExist.
 ///
 /// # Safety
-/// `pbSlaveTab_p` must be valid for `bNumOfSlaves_p` bytes, and stay valid
-/// while the table is defined ([`AppTables`]: it is read again when the
-/// application changes it).
+/// `pbSlaveTab_p` must be valid for `bNumOfSlaves_p` bytes and stay valid
+/// until the next call or `CcmShutDownCANopen`: the table is read again
+/// when the application changes it (README "Tables with free slots").
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmDefineSlaveTab(
     pbSlaveTab_p: *const BYTE,

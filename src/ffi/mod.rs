@@ -26,6 +26,7 @@ mod ptr;
 pub mod services;
 pub mod srdo;
 pub mod stack_callbacks;
+pub mod tables;
 pub mod types;
 
 include!(concat!(env!("OUT_DIR"), "/abi_symbol.rs"));
