@@ -37,6 +37,24 @@ OBD_BEGIN ()
             OBD_SUBINDEX_ROM_VSTRING(0x100A, 0x00, 0x01, Manufacturer_Software_Version, DEFINED_STRING_VERSION)
         OBD_END_INDEX(0x100A)
 
+#if defined(OBJDICT_ALL_WITH_STORE)
+        // 0x1010 store parameters, 0x1011 restore default parameters
+        OBD_BEGIN_INDEX_RAM(0x1010, 0x05, CcmCbStore)
+            OBD_SUBINDEX_ROM_VAR(0x1010, 0x00, 0x05, 0x01, tObdUnsigned8, Largest_Subindex, 0x04)
+            OBD_SUBINDEX_RAM_VAR(0x1010, 0x01, 0x07, 0x03, tObdUnsigned32, Save_All, 0x00000001)
+            OBD_SUBINDEX_RAM_VAR(0x1010, 0x02, 0x07, 0x03, tObdUnsigned32, Save_Communication, 0x00000001)
+            OBD_SUBINDEX_RAM_VAR(0x1010, 0x03, 0x07, 0x03, tObdUnsigned32, Save_Application, 0x00000001)
+            OBD_SUBINDEX_RAM_VAR(0x1010, 0x04, 0x07, 0x03, tObdUnsigned32, Save_Manufacturer, 0x00000001)
+        OBD_END_INDEX(0x1010)
+        OBD_BEGIN_INDEX_RAM(0x1011, 0x05, CcmCbRestore)
+            OBD_SUBINDEX_ROM_VAR(0x1011, 0x00, 0x05, 0x01, tObdUnsigned8, Largest_Subindex, 0x04)
+            OBD_SUBINDEX_RAM_VAR(0x1011, 0x01, 0x07, 0x03, tObdUnsigned32, Restore_All, 0x00000001)
+            OBD_SUBINDEX_RAM_VAR(0x1011, 0x02, 0x07, 0x03, tObdUnsigned32, Restore_Communication, 0x00000001)
+            OBD_SUBINDEX_RAM_VAR(0x1011, 0x03, 0x07, 0x03, tObdUnsigned32, Restore_Application, 0x00000001)
+            OBD_SUBINDEX_RAM_VAR(0x1011, 0x04, 0x07, 0x03, tObdUnsigned32, Restore_Manufacturer, 0x00000001)
+        OBD_END_INDEX(0x1011)
+#endif
+
         // 0x1017 producer heartbeat time
         OBD_BEGIN_INDEX_RAM(0x1017, 0x01, HbpCbConfigHeartbeat)
             OBD_SUBINDEX_RAM_VAR(0x1017, 0x00, 0x06, 0x83, tObdUnsigned16, Producer_Heartbeat_Time, 0x0)
