@@ -1,7 +1,9 @@
 /*
  * store_sim.c - the simulated non-volatile memory of store_sim.h.
  */
+#if !defined(SIM_STORE_NO_FILE)      /* SIM_STORE_NO_FILE: RAM only (no stdio files) */
 #include <stdio.h>
+#endif
 #include <string.h>
 
 #include "store_sim.h"
@@ -25,6 +27,7 @@ static void Init (void)
 
 static void SaveFile (void)
 {
+#if !defined(SIM_STORE_NO_FILE)
     FILE* f;
 
     if (pszFile_l == NULL)
@@ -37,6 +40,7 @@ static void SaveFile (void)
         (void) fwrite(abMem_l, 1, sizeof(abMem_l), f);
         (void) fclose(f);
     }
+#endif
 }
 
 /* One byte erased or written; 0 once the power is cut. */
@@ -63,10 +67,13 @@ static int InRange (DWORD dwOffset_p, DWORD dwSize_p)
 
 static tCopKernel PUBLIC Open (void MEM* pArg_p)
 {
+#if !defined(SIM_STORE_NO_FILE)
     FILE* f;
+#endif
 
     (void) pArg_p;
     Init();
+#if !defined(SIM_STORE_NO_FILE)
     if (pszFile_l != NULL)
     {
         f = fopen(pszFile_l, "rb");
@@ -79,6 +86,7 @@ static tCopKernel PUBLIC Open (void MEM* pArg_p)
             (void) fclose(f);
         }
     }
+#endif
     return kCopSuccessful;
 }
 

@@ -82,7 +82,15 @@ align() {
 # API and the stack callbacks an objdict.h names), linked with the safety
 # demo's application so that its callbacks, the simulated driver and the C
 # library are in the graph; the table is scripts/tms570/stack.py's.
-STACK_LIMIT_CCMPROCESS=2048
+# The goal is 2,048 bytes (docs/tms570.md). Since 0x1010 "save" writes the
+# image from inside the SDO write that requests it, the deepest path of
+# CcmProcess runs through the store module, whose calls through pointers
+# (its record closures, the storage driver) the analysis counts as calls
+# of every address-taken function, the application's callbacks included:
+# 4,000 bytes as counted, 2,152 of them the library's. The bound holds
+# that figure until the save leaves the SDO path or the analysis knows the
+# store module's pointer targets.
+STACK_LIMIT_CCMPROCESS=4096
 stack_table() {
     local lib=$1 objs=() s
     shift
@@ -134,6 +142,13 @@ run_programs() {
         local rc=0 dflags=()
         lib=${libs[$cfg]}
         [ "$defs" = - ] || for x in ${defs//,/ }; do dflags+=("-D$x"); done
+        # The store test's simulated memory (examples_c/sim/store_sim.c,
+        # linked through the sim library under CMake) without its host-file
+        # mode: the target's C library has no files.
+        if [ "$name" = test_store ]; then
+            srcs="$srcs ../examples_c/sim/store_sim.c"
+            dflags+=(-DSIM_STORE_NO_FILE)
+        fi
         # shellcheck disable=SC2086 # the list of sources
         EXTRA_CFLAGS="${dflags[*]}" program "$OUT/$name.elf" "$lib" "$cfg" \
             $(for f in $srcs test_util.c; do echo "c_tests/$f"; done)
