@@ -182,7 +182,8 @@ def disassemble(elf, objdump):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--elf", required=True)
-    ap.add_argument("--su", required=True)
+    ap.add_argument("--su", required=True, action="append",
+                    help="directory of .su files (searched recursively; may be repeated)")
     ap.add_argument("--objdump", default="arm-none-eabi-objdump")
     ap.add_argument("--entries", help="file with one entry-point name a line")
     ap.add_argument("--report", action="append", default=[])
@@ -198,9 +199,13 @@ def main():
                     help="regex: address-taken functions the application calls through its own "
                          "pointers and never hands to the library")
     ap.add_argument("--indirect", action="append", default=[],
-                    help="SITE=TARGETS (regexes): indirect calls in functions matching SITE "
-                         "reach only the address-taken functions matching TARGETS (the first "
-                         "matching rule applies)")
+                    help="SITE=TARGETS: indirect calls in functions matching the regex SITE "
+                         "reach only the address-taken functions matching the regex TARGETS, "
+                         "or, for TARGETS @SYM[,SYM...], only the functions whose addresses "
+                         "the data objects SYM hold (the first matching rule applies)")
+    ap.add_argument("--pump", default="",
+                    help="regex: functions never entered again while one of them runs "
+                         "(the C API's event pump, guarded by its pumping flag)")
     ap.add_argument("--nonnesting", default="",
                     help="regex: application callbacks the library calls directly and "
                          "never while another one runs")
@@ -209,8 +214,13 @@ def main():
 
     data, end, sections = read_sections(args.elf)
     rust = stack_sizes(data, end, sections)
-    csu = su_frames(args.su)
+    csu = {}
+    for d in args.su:
+        for k, v in su_frames(d).items():
+            if k not in csu or csu[k][0] < v[0]:
+                csu[k] = v
     funcs, consts = disassemble(args.elf, args.objdump)
+    demangle_all(funcs)
     by_addr = {f["addr"]: name for name, f in funcs.items()}
     taken = sorted(by_addr[a] for a in (address_words(data, end, sections) | consts) & set(by_addr))
 
@@ -233,41 +243,72 @@ def main():
 
     cb = re.compile(args.callbacks) if args.callbacks else re.compile(r"$^")
     app_ptr = re.compile(args.app_pointers) if args.app_pointers else None
-    rules = [(re.compile(x.split("=", 1)[0]), re.compile(x.split("=", 1)[1])) for x in args.indirect]
+    objects = data_objects(args)
+    rules = []
+    for x in args.indirect:
+        site, targets = x.split("=", 1)
+        if targets.startswith("@"):
+            held = set()
+            for sym in targets[1:].split(","):
+                if sym not in objects:
+                    errors.append("--indirect %s: no data object %s in the image" % (x, sym))
+                    continue
+                held |= set(by_addr[a] for a in words_of(data, end, sections, *objects[sym])
+                            if a in by_addr)
+            rules.append((re.compile(site), held))
+        else:
+            rules.append((re.compile(site), re.compile(targets)))
+
+    def targeted(rule, c):
+        if isinstance(rule, set):
+            return c in rule
+        return rule.search(rule_name(c)) is not None
 
     nonnest = re.compile(args.nonnesting) if args.nonnesting else None
+    pump = re.compile(args.pump) if args.pump else None
 
-    def edges_of(name, in_cb):
-        """(callee, child in_cb, pushes own frame) of the calls that can run.
+    def edges_of(name, state):
+        """(callee, child state, pushes own frame) of the calls that can run.
 
-        in_cb: an application callback is running. The library never calls a
-        second one then (callbacks are never nested: what a callback causes
-        is queued until it has returned), except the OBD callbacks of a
-        dictionary access (--indirect rules), which can run inside one."""
+        state = (in_cb, in_pump). in_cb: an application callback is running.
+        The library never calls a second one then (callbacks are never
+        nested: what a callback causes is queued until it has returned),
+        except the OBD callbacks of a dictionary access (--indirect rules),
+        which can run inside one. in_pump: a --pump function is running; no
+        --pump function is entered then."""
+        in_cb, in_pump = state
         f = funcs[name]
         lib = source[name] == "rust"
         out = []
+
+        def add(c, child_cb, pushes):
+            is_pump = pump is not None and pump.search(rule_name(c)) is not None
+            if is_pump and in_pump:
+                return  # the pump returns at once while it runs
+            out.append((c, (child_cb, in_pump or is_pump), pushes))
+
         for c in f["calls"]:
             if lib and nonnest is not None and nonnest.search(c):
                 if not in_cb:
-                    out.append((c, True, True))
+                    add(c, True, True)
             else:
-                out.append((c, in_cb, True))
-        out += [(c, in_cb, False) for c in f["tails"]]
+                add(c, in_cb, True)
+        for c in f["tails"]:
+            add(c, in_cb, False)
         if f["indirect"]:
-            rule = next((t for s_, t in rules if s_.search(name)), None)
+            rule = next((t for s_, t in rules if s_.search(rule_name(name))), None)
             if rule is None and lib and in_cb:
                 return out
-            for c in taken:
+            for c in (sorted(rule) if isinstance(rule, set) else taken):
                 if lib and app_ptr is not None and app_ptr.search(c):
                     continue  # a pointer the application never hands to the library
-                if rule is not None and not rule.search(c):
+                if rule is not None and not targeted(rule, c):
                     continue  # not of the pointer type this call site calls
-                out.append((c, in_cb or (lib and rule is None), True))
+                add(c, in_cb or (lib and rule is None), True)
         return out
 
-    def depth(name, path, in_cb, lib_only):
-        key = (name, in_cb, lib_only)
+    def depth(name, path, state, lib_only):
+        key = (name, state, lib_only)
         if key in memo:
             return memo[key]
         if name not in funcs:
@@ -279,12 +320,12 @@ def main():
             return memo[key]
         best_call, best_path = 0, []
         best_tail, tail_path = 0, []
-        here = path + [(name, in_cb)]
-        for callee, child_cb, pushes in edges_of(name, in_cb):
-            if (callee, child_cb) in here:
+        here = path + [(name, state)]
+        for callee, child, pushes in edges_of(name, state):
+            if (callee, child) in here:
                 errors.append("recursion: %s" % " -> ".join(demangle_short(x) for x, _ in here + [(callee, 0)]))
                 continue
-            d, p = depth(callee, here, child_cb, lib_only)
+            d, p = depth(callee, here, child, lib_only)
             if not pushes:
                 if d > best_tail:
                     best_tail, tail_path = d, p
@@ -319,8 +360,8 @@ def main():
         if e not in funcs:
             rows.append((e, None, None, []))
             continue
-        full, path = depth(e, [], False, False)
-        lib = depth(e, [], False, True)[0] if stop else full
+        full, path = depth(e, [], START, False)
+        lib = depth(e, [], START, True)[0] if stop else full
         rows.append((e, full, lib, path))
         if e in limits and full > limits[e]:
             failed = True
@@ -330,23 +371,28 @@ def main():
         for e in args.report:
             if e not in funcs:
                 continue
-            best = {}
-            todo = [(e, 0, (e,), False)]
+            best = {}  # (function, state) -> most stack in use on entry
+            todo = [(e, 0, (e,), START)]
             while todo:
-                name, used, path, in_cb = todo.pop()
-                if name not in funcs or best.get(name, -1) >= used:
+                name, used, path, state = todo.pop()
+                if name not in funcs or best.get((name, state), -1) >= used:
                     continue
-                best[name] = used
+                best[(name, state)] = used
                 if cb.search(name) and name != e:
                     continue  # the callback's own depth is added below
-                for callee, child_cb, pushes in edges_of(name, in_cb):
+                for callee, child, pushes in edges_of(name, state):
                     if callee in path:
                         continue
-                    todo.append((callee, used + (frame[name] if pushes else 0), path + (callee,), child_cb))
-            for name in sorted(best):
+                    todo.append((callee, used + (frame[name] if pushes else 0), path + (callee,), child))
+            worst = {}
+            for (name, state), used in best.items():
                 if cb.search(name) and name != e:
-                    d = depth(name, [], True, False)[0]
-                    cb_rows.append((e, name, best[name], d))
+                    # The callback runs as one (in_cb), in the pump or not.
+                    d = depth(name, [], (True, state[1]), False)[0]
+                    if name not in worst or used + d > sum(worst[name]):
+                        worst[name] = (used, d)
+            for name in sorted(worst):
+                cb_rows.append((e, name) + worst[name])
     demangle_all(p[:-7] if p.endswith(" (tail)") else p for row in rows for p in row[3])
     if args.markdown:
         print("| entry point | library alone | with the demo's callbacks, driver and C library | deepest path |")
@@ -388,7 +434,39 @@ def main():
     sys.exit(1 if errors or failed else 0)
 
 
+START = (False, False)  # (in a callback, in the pump) at an entry point
 DEMANGLED = {}
+FULL = {}
+
+
+def rule_name(name):
+    """The name --indirect, --pump match: demangled, without crate hashes
+    (C names as they are)."""
+    return FULL.get(name, name)
+
+
+def data_objects(args):
+    """Data symbols of the image: name -> (address, size)."""
+    nm = subprocess.run([args.objdump.replace("objdump", "nm"), "-S", args.elf], check=True,
+                        stdout=subprocess.PIPE, universal_newlines=True).stdout
+    objects = {}
+    for line in nm.splitlines():
+        parts = line.split()
+        if len(parts) == 4 and parts[2] in "dDrRbB":
+            objects[parts[3]] = (int(parts[0], 16), int(parts[1], 16))
+    return objects
+
+
+def words_of(data, end, sections, addr, size):
+    """The aligned 32-bit words of [addr, addr + size) in the image (as code
+    addresses: the Thumb bit cleared)."""
+    out = []
+    for sec_addr, off, sec_size, flags, typ in sections.values():
+        if typ == 8 or not flags & 0x2 or not sec_addr <= addr < sec_addr + sec_size:
+            continue
+        for a in range(addr, min(addr + size, sec_addr + sec_size) - 3, 4):
+            out.append(struct.unpack_from(end + "I", data, off + a - sec_addr)[0] & ~1)
+    return out
 
 
 def demangle_all(names):
@@ -401,6 +479,7 @@ def demangle_all(names):
                          stdout=subprocess.PIPE, universal_newlines=True).stdout.splitlines()
     for raw, nice in zip(names, out):
         nice = re.sub(r"\[[0-9a-f]+\]", "", nice)
+        FULL[raw] = nice
         prev = None
         while prev != nice:  # innermost generic arguments first
             prev = nice

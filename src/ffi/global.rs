@@ -244,6 +244,11 @@ fn deliver(e: Event, cbs: Callbacks) {
     }
 }
 
+/// The pump's loop, out of line: only [`pump`] calls it, never while it
+/// runs (`pumping`), which the worst-case stack analysis relies on
+/// (scripts/tms570/stack.py `--pump`, docs/tms570.md): a `Ccm*` call made
+/// from inside a callback does not reach the stack's processing again.
+#[inline(never)]
 fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Option<Event>) -> bool {
     let mut not_handled = false;
     loop {

@@ -626,6 +626,10 @@ impl ObdVarEntry {
     }
 
     /// Calls the variable callback registered with the variable, if any.
+    /// Out of line: the one call site of a variable callback, which the
+    /// worst-case stack analysis resolves like an OBD callback
+    /// (scripts/tms570/run.sh, docs/tms570.md).
+    #[inline(never)]
     pub fn notify(&self) -> u32 {
         let f = self.m_fpCallback.load(Ordering::Relaxed);
         if f.is_null() {

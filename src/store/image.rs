@@ -103,15 +103,19 @@ pub enum ImageError {
     Rejected,
 }
 
-/// A visitor of records: `(index, sub, value)`.
-pub type Visit<'a> = dyn FnMut(u16, u8, &[u8]) -> Result<(), ImageError> + 'a;
+/// A visitor of records: `(index, sub, value)`. A trait, not a `dyn`
+/// type, so that every visit is a direct call (the worst-case stack
+/// analysis of docs/tms570.md follows direct calls exactly).
+pub trait Visit: FnMut(u16, u8, &[u8]) -> Result<(), ImageError> {}
+
+impl<F: FnMut(u16, u8, &[u8]) -> Result<(), ImageError> + ?Sized> Visit for F {}
 
 /// What the stack offers the image: the stored objects of each part.
 pub trait Records {
     /// Signature of the dictionary layout (objects, subindices, sizes).
     fn signature(&self) -> u32;
     /// Calls `f(index, sub, value)` for every stored object of `part`.
-    fn each(&self, part: u8, f: &mut Visit<'_>) -> Result<(), ImageError>;
+    fn each<F: Visit + ?Sized>(&self, part: u8, f: &mut F) -> Result<(), ImageError>;
     /// Whether `value` would be accepted for `(index, sub)` (no change).
     fn check(&self, index: u16, sub: u8, value: &[u8]) -> bool;
     /// Applies a checked value.
@@ -131,7 +135,7 @@ pub struct SlotInfo {
 }
 
 /// Geometry of a memory: slot length, alignment.
-fn geometry(nv: &dyn NvMemory) -> Result<(u32, u32), ImageError> {
+fn geometry<N: NvMemory + ?Sized>(nv: &N) -> Result<(u32, u32), ImageError> {
     let align = nv.align();
     if align == 0 || !align.is_power_of_two() || align as usize > CHUNK {
         return Err(ImageError::Geometry);
@@ -172,8 +176,8 @@ fn newer(a: u32, b: u32) -> bool {
 
 /// Reads and checks the header of `slot`; `None` when it is not a valid
 /// header of this format. `Some(Err(Foreign))` for another dictionary.
-fn header(
-    nv: &mut dyn NvMemory,
+fn header<N: NvMemory + ?Sized>(
+    nv: &mut N,
     slot: u8,
     slot_len: u32,
     signature: u32,
@@ -210,7 +214,7 @@ fn header(
 
 /// The sequence number of a slot whose header is intact (any
 /// dictionary), `None` for an empty or damaged slot.
-fn occupied(nv: &mut dyn NvMemory, slot: u8, slot_len: u32) -> Option<u32> {
+fn occupied<N: NvMemory + ?Sized>(nv: &mut N, slot: u8, slot_len: u32) -> Option<u32> {
     let mut h = [0u8; HEADER_LEN + 4];
     nv.read(u32::from(slot) * slot_len, &mut h).ok()?;
     let body = h.get(..HEADER_LEN)?;
@@ -218,12 +222,12 @@ fn occupied(nv: &mut dyn NvMemory, slot: u8, slot_len: u32) -> Option<u32> {
 }
 
 /// Walks the records of one block; `f` sees each.
-fn walk(
-    nv: &mut dyn NvMemory,
+fn walk<N: NvMemory + ?Sized, F: Visit + ?Sized>(
+    nv: &mut N,
     mut at: u32,
     len: u32,
     crc_expected: u32,
-    f: &mut Visit<'_>,
+    f: &mut F,
 ) -> Result<(), ImageError> {
     let end = at + len;
     let mut digest = CRC32.digest();
@@ -263,9 +267,9 @@ fn payload_start(info: &SlotInfo, slot_len: u32, block: usize) -> u32 {
 
 /// Checks one slot completely: its header and every block CRC, and that
 /// every record is accepted by `records` (nothing applied).
-fn verify(
-    nv: &mut dyn NvMemory,
-    records: &dyn Records,
+fn verify<N: NvMemory + ?Sized, R: Records + ?Sized>(
+    nv: &mut N,
+    records: &R,
     slot: u8,
     slot_len: u32,
     key: u32,
@@ -287,9 +291,9 @@ fn verify(
 
 /// The newest slot that passes [`verify`]; the error of the newest
 /// candidate when none passes (Foreign before NoImage).
-pub fn newest(
-    nv: &mut dyn NvMemory,
-    records: &dyn Records,
+pub fn newest<N: NvMemory + ?Sized, R: Records + ?Sized>(
+    nv: &mut N,
+    records: &R,
     key: u32,
 ) -> Result<SlotInfo, ImageError> {
     let (slot_len, _) = geometry(nv)?;
@@ -319,9 +323,9 @@ fn worst(a: ImageError, b: ImageError) -> ImageError {
 /// Applies the parts `parts` of the newest valid image: checked entirely
 /// first, then applied. Returns the parts applied (those both asked for
 /// and present).
-pub fn load(
-    nv: &mut dyn NvMemory,
-    records: &mut dyn Records,
+pub fn load<N: NvMemory + ?Sized, R: Records + ?Sized>(
+    nv: &mut N,
+    records: &mut R,
     key: u32,
     parts: u8,
 ) -> Result<u8, ImageError> {
@@ -341,9 +345,9 @@ pub fn load(
 }
 
 /// Whether a valid image holds every part of `parts`.
-pub fn holds(
-    nv: &mut dyn NvMemory,
-    records: &dyn Records,
+pub fn holds<N: NvMemory + ?Sized, R: Records + ?Sized>(
+    nv: &mut N,
+    records: &R,
     key: u32,
     parts: u8,
 ) -> Result<(), ImageError> {
@@ -356,8 +360,8 @@ pub fn holds(
 }
 
 /// Streams bytes into the memory through [`CHUNK`] bytes, aligned.
-struct Writer<'a> {
-    nv: &'a mut dyn NvMemory,
+struct Writer<'a, N: NvMemory + ?Sized> {
+    nv: &'a mut N,
     at: u32,
     end: u32,
     buf: [u8; CHUNK],
@@ -365,7 +369,7 @@ struct Writer<'a> {
     align: usize,
 }
 
-impl Writer<'_> {
+impl<N: NvMemory + ?Sized> Writer<'_, N> {
     fn push(&mut self, mut data: &[u8]) -> Result<(), ImageError> {
         while !data.is_empty() {
             let room = CHUNK - self.fill;
@@ -407,9 +411,9 @@ impl Writer<'_> {
 /// it belongs to this dictionary).
 /// Returns the slot written. A failure at any point leaves the previous
 /// image the newest valid one.
-pub fn store(
-    nv: &mut dyn NvMemory,
-    records: &dyn Records,
+pub fn store<N: NvMemory + ?Sized, R: Records + ?Sized>(
+    nv: &mut N,
+    records: &R,
     key: u32,
     parts: u8,
     drop: u8,
@@ -513,7 +517,7 @@ pub fn store(
 
 /// Invalidates both slots (`CcmStoreRestoreDefault`): the next start uses
 /// the defaults.
-pub fn erase_all(nv: &mut dyn NvMemory) -> Result<(), ImageError> {
+pub fn erase_all<N: NvMemory + ?Sized>(nv: &mut N) -> Result<(), ImageError> {
     let (slot_len, _) = geometry(nv)?;
     nv.erase(0, slot_len).map_err(|_| ImageError::Driver)?;
     nv.erase(slot_len, slot_len)

@@ -130,7 +130,7 @@ impl Records for Dict {
         }
         d.finish()
     }
-    fn each(&self, part: u8, f: &mut Visit<'_>) -> Result<(), ImageError> {
+    fn each<F: Visit + ?Sized>(&self, part: u8, f: &mut F) -> Result<(), ImageError> {
         for (i, s, v) in self.objs.iter().filter(|o| part_of(o.0) == part) {
             f(*i, *s, v)?;
         }
@@ -258,7 +258,7 @@ fn a_record_the_dictionary_refuses_stops_everything_before_applying() {
         fn signature(&self) -> u32 {
             self.0.signature()
         }
-        fn each(&self, part: u8, f: &mut Visit<'_>) -> Result<(), ImageError> {
+        fn each<F: Visit + ?Sized>(&self, part: u8, f: &mut F) -> Result<(), ImageError> {
             self.0.each(part, f)
         }
         fn check(&self, index: u16, _: u8, _: &[u8]) -> bool {

@@ -98,24 +98,37 @@ pub trait StorageDriver {
 }
 
 /// A [`StorageDriver`] as an [`NvMemory`].
+///
+/// The driver is the module's only call through a pointer (the image code
+/// is generic over [`NvMemory`] and [`Records`], its visitors are
+/// closures called directly). The methods stay out of line, so that every
+/// call of a driver function goes through one of them: the worst-case stack
+/// analysis (scripts/tms570/stack.py, docs/tms570.md) resolves exactly these
+/// calls to the [`StorageDriver`] implementations.
 struct Nv<'a>(&'a dyn StorageDriver);
 
 impl NvMemory for Nv<'_> {
+    #[inline(never)]
     fn size(&self) -> u32 {
         self.0.size()
     }
+    #[inline(never)]
     fn align(&self) -> u32 {
         self.0.align()
     }
+    #[inline(never)]
     fn read(&mut self, offset: u32, out: &mut [u8]) -> Result<(), NvFault> {
         self.0.read(offset, out)
     }
+    #[inline(never)]
     fn write(&mut self, offset: u32, data: &[u8]) -> Result<(), NvFault> {
         self.0.write(offset, data)
     }
+    #[inline(never)]
     fn erase(&mut self, offset: u32, len: u32) -> Result<(), NvFault> {
         self.0.erase(offset, len)
     }
+    #[inline(never)]
     fn commit(&mut self) -> Result<(), NvFault> {
         self.0.commit()
     }
@@ -146,10 +159,10 @@ pub struct OdRecords<'a>(pub &'a ObjectDictionary);
 
 impl OdRecords<'_> {
     /// Calls `f` for every stored object of the image part `p`.
-    fn objects(
+    fn objects<F: FnMut(&Object) -> Result<(), ImageError>>(
         &self,
         p: u8,
-        f: &mut dyn FnMut(&Object) -> Result<(), ImageError>,
+        f: &mut F,
     ) -> Result<(), ImageError> {
         let od = self.0;
         for entry in od.entries() {
@@ -202,7 +215,7 @@ impl Records for OdRecords<'_> {
         d.finish()
     }
 
-    fn each(&self, p: u8, f: &mut Visit<'_>) -> Result<(), ImageError> {
+    fn each<F: Visit + ?Sized>(&self, p: u8, f: &mut F) -> Result<(), ImageError> {
         let od = self.0;
         self.objects(p, &mut |o| {
             let mut buf = [0u8; image::OBJECT_MAX];
