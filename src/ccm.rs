@@ -684,6 +684,7 @@ impl Stack {
 
     /// Restores the defaults of `from..=to`; a dynamic OD then puts its
     /// values back (it stays in force until `DynDestroyOd`).
+    #[inline(never)] // out of `run`: its frame stays off the store path (docs/tms570.md)
     fn restore_defaults(&mut self, from: u16, to: u16) {
         self.od.restore_defaults(from, to);
         if let Some(d) = &self.dynamic {
@@ -742,6 +743,7 @@ impl Stack {
     /// Lets every module take over its parameters from the dictionary and
     /// tells the driver the identifiers (after reset communication, and
     /// after a dynamic OD changed the dictionary).
+    #[inline(never)] // out of `run`: its frame stays off the store path (docs/tms570.md)
     fn reconfigure_modules(&mut self, port: &mut impl CanPort, now: Ticks) {
         self.reconfigure_services(now);
         self.hb.reconfigure(&self.od, now);
@@ -780,6 +782,7 @@ impl Stack {
         }
     }
 
+    #[inline(never)] // out of `run`: its frame stays off the store path (docs/tms570.md)
     fn enter_state(&mut self, s: NmtState, port: &mut impl CanPort, now: Ticks) {
         let from = self.state;
         self.state = s;

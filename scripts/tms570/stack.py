@@ -484,6 +484,7 @@ def demangle_all(names):
         while prev != nice:  # innermost generic arguments first
             prev = nice
             nice = re.sub(r"::<[^<>]*>", "", nice)
+            nice = re.sub(r"(?<=\w)<[^<>]*>", "", nice)
         nice = re.sub(r"^<(.*) as [^<>]*>", r"\1", nice)
         nice = re.sub(r"^<([^<>]*)>", r"\1", nice)
         nice = re.sub(r"^cop::", "", nice)

@@ -1020,16 +1020,24 @@ impl ObjectDictionary {
                 CbArg::Data(copy.get_mut(..n).unwrap_or(&mut [])),
             )
         } else {
-            // Strings and domains: the callback sees a copy of the source data
-            // (at most one SDO buffer; longer data is passed without copy).
-            let mut copy = [0u8; crate::config::SDOS_BUFFER_SIZE];
-            match copy.get_mut(..data.len()) {
-                Some(c) => {
-                    c.copy_from_slice(data);
-                    self.callback(obj, event::PRE_WRITE, CbArg::Data(c))
-                }
-                None => self.callback(obj, event::PRE_WRITE, CbArg::None),
+            self.pre_write_callback_copy(obj, data)
+        }
+    }
+
+    /// [`Self::pre_write_callback`] of a string or domain: the callback
+    /// sees a copy of the source data (at most one SDO buffer; longer data
+    /// is passed without copy). Out of line, so that the buffer is on the
+    /// stack only while such a callback runs, not under every write
+    /// (worst-case stack, docs/tms570.md).
+    #[inline(never)]
+    fn pre_write_callback_copy(&self, obj: &Object, data: &[u8]) -> Result<(), OdError> {
+        let mut copy = [0u8; crate::config::SDOS_BUFFER_SIZE];
+        match copy.get_mut(..data.len()) {
+            Some(c) => {
+                c.copy_from_slice(data);
+                self.callback(obj, event::PRE_WRITE, CbArg::Data(c))
             }
+            None => self.callback(obj, event::PRE_WRITE, CbArg::None),
         }
     }
 

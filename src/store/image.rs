@@ -176,6 +176,9 @@ fn newer(a: u32, b: u32) -> bool {
 
 /// Reads and checks the header of `slot`; `None` when it is not a valid
 /// header of this format. `Some(Err(Foreign))` for another dictionary.
+// Out of line: its buffer is on the stack only while it runs, not under
+// the calls its caller makes (worst-case stack, docs/tms570.md).
+#[inline(never)]
 fn header<N: NvMemory + ?Sized>(
     nv: &mut N,
     slot: u8,
@@ -214,6 +217,9 @@ fn header<N: NvMemory + ?Sized>(
 
 /// The sequence number of a slot whose header is intact (any
 /// dictionary), `None` for an empty or damaged slot.
+// Out of line: its buffer is on the stack only while it runs, not under
+// the calls its caller makes (worst-case stack, docs/tms570.md).
+#[inline(never)]
 fn occupied<N: NvMemory + ?Sized>(nv: &mut N, slot: u8, slot_len: u32) -> Option<u32> {
     let mut h = [0u8; HEADER_LEN + 4];
     nv.read(u32::from(slot) * slot_len, &mut h).ok()?;
@@ -222,6 +228,9 @@ fn occupied<N: NvMemory + ?Sized>(nv: &mut N, slot: u8, slot_len: u32) -> Option
 }
 
 /// Walks the records of one block; `f` sees each.
+// Out of line: its buffer is on the stack only while it runs, not under
+// the calls its caller makes (worst-case stack, docs/tms570.md).
+#[inline(never)]
 fn walk<N: NvMemory + ?Sized, F: Visit + ?Sized>(
     nv: &mut N,
     mut at: u32,
@@ -428,6 +437,25 @@ pub fn store<N: NvMemory + ?Sized, R: Records + ?Sized>(
         (None, Some(_), None) => 1,
         (None, _, _) => 0,
     };
+    write_slot(nv, records, key, parts, drop, old, target, slot_len, align)
+}
+
+/// [`store`] after the choice of the slot: writes `target`. Out of line,
+/// so that its buffers are not on the stack while [`store`] checks the old
+/// image (worst-case stack, docs/tms570.md).
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+fn write_slot<N: NvMemory + ?Sized, R: Records + ?Sized>(
+    nv: &mut N,
+    records: &R,
+    key: u32,
+    parts: u8,
+    drop: u8,
+    old: Option<SlotInfo>,
+    target: u8,
+    slot_len: u32,
+    align: u32,
+) -> Result<SlotInfo, ImageError> {
     let base = u32::from(target) * slot_len;
     nv.erase(base, slot_len).map_err(|_| ImageError::Driver)?;
     let mut w = Writer {
