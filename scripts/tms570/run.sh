@@ -101,9 +101,9 @@ stack_table() {
     # Indirect calls (the first matching rule applies):
     # * the store module's only pointer call is the storage driver, in the
     #   methods of its NvMemory adapter (store::Nv, out of line): they reach
-    #   the StorageDriver implementations, and those (the C adapter
-    #   CStore) the functions of the application's tCopStoreDriver
-    #   (store_sim.c's Driver_l);
+    #   the StorageDriver implementations, and those (the methods of the C
+    #   adapter CStore, m_fpOpen's included) the functions of the
+    #   application's tCopStoreDriver (store_sim.c's Driver_l);
     # * a dictionary access calls OBD callbacks (the functions in the
     #   dictionary tables, not App* or ObdInitRam*), and a variable's
     #   notification (ObdVarEntry::notify) the tVarCallback of
@@ -114,7 +114,7 @@ stack_table() {
         --entries "$OUT/exported.txt" --report CcmProcess --report main \
         --callbacks '^(App|ObdInitRam)' --nonnesting '^App' --stop '^(App|Cdrv|Tgt|Obd|Sim|Safety|Sensor|Actuator|Open$|Read$|Write$|Erase$|Commit$)' \
         --app-pointers '^(SensorCycle|ActuatorCycle)$' \
-        --indirect '^<cop::ffi::services::CStore as cop::store::StorageDriver>::=@Driver_l' \
+        --indirect '^<cop::ffi::services::CStore( as cop::store::StorageDriver)?>::=@Driver_l' \
         --indirect '^<cop::store::Nv as cop::store::image::NvMemory>::=^<[^<>]+ as cop::store::StorageDriver>::[a-z_]+$' \
         --indirect 'ObjectDictionary|ObdVarEntry>::notify$=^(?!App|ObdInitRam)' --pump '^cop::ffi::global::pump_events::' \
         --limit CcmProcess=$STACK_LIMIT_CCMPROCESS "$@"

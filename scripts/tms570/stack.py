@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Worst-case stack depth of a linked TMS570 image, from a static call graph.
 
-    stack.py --elf IMAGE --su DIR [--entries FILE] [--report NAME ...]
-             [--limit NAME=BYTES ...] [--markdown]
+    stack.py --elf IMAGE --su DIR [--su DIR ...] [--entries FILE] [--report NAME ...]
+             [--indirect SITE=TARGETS ...] [--pump REGEX] [--limit NAME=BYTES ...] [--markdown]
 
 Frame sizes:
   * Rust functions (libcop.a, core): the compiler's own figure, the
@@ -19,10 +19,34 @@ calls, b<cond> <f> to another function's first instruction is a tail call
 bx rN other than lr) may reach every function whose address is stored
 anywhere in the image (tables, literal pools) or built by a movw/movt pair:
 the address-taken set.
+--indirect SITE=TARGETS narrows that set for the call sites in functions
+whose name (demangled, without crate hashes) matches SITE, to the
+address-taken functions matching the regex TARGETS, or, with
+TARGETS = @SYM[,SYM...], to the functions whose addresses the data objects
+SYM hold (a C table of function pointers such as an application's
+tCopStoreDriver: a call through one of its fields reaches only what it
+holds). The first rule whose SITE matches applies. A rule is sound only
+for a site whose every pointer call is of the named kind, so the library
+keeps such calls in functions of their own (store::Nv's methods for the
+storage driver); a rule must not name targets that match its own SITE
+(or a chain of rules leading back to it), or the graph has a cycle that
+is no recursion of the program, which fails as recursion. The rules
+run.sh gives:
+  * <store::Nv as NvMemory>::*  ->  the StorageDriver implementations
+    (the store module's only call through a pointer: its image code is
+    generic, its visitors are called directly);
+  * <ffi::services::CStore (as StorageDriver)>::*  ->  @Driver_l, the
+    functions of the application's tCopStoreDriver (store_sim.c's; the
+    adapter's methods are the only callers of the driver's functions);
+  * dictionary accesses and ObdVarEntry::notify  ->  every address-taken
+    function but App* / ObdInitRam* (OBD and variable callbacks).
 The library never calls an application callback while another one runs
 (--nonnesting, and indirect calls outside the --indirect rules); the OBD
-callbacks of a dictionary access can run inside one. Any cycle left is
-recursion and an error.
+callbacks of a dictionary access can run inside one. The --pump functions
+(the C API's event pump loop) are never entered while one of them runs:
+pump() returns at once while its pumping flag is set, so a Ccm* call made
+from a callback does not reach the stack's processing again. Any cycle
+left is recursion and an error.
 
 depth(f) = max(frame(f) + max depth(called), max depth(tail-called)).
 The output is one line per entry point (every function named in FILE, or

@@ -111,8 +111,25 @@ pub unsafe extern "C" fn CcmTspSend(
     }))
 }
 
-/// The application's driver as the stack's [`StorageDriver`].
+/// The application's driver as the stack's [`StorageDriver`]. Its methods
+/// are the only places that call the driver's functions (the worst-case
+/// stack analysis resolves their calls to the application's
+/// `tCopStoreDriver`, docs/tms570.md).
 struct CStore(&'static tCopStoreDriver);
+
+impl CStore {
+    /// `m_fpOpen` (optional): kCopCcmStoreHwError when it fails.
+    #[inline(never)]
+    fn open(&self) -> CopResult {
+        if let Some(open) = self.0.m_fpOpen {
+            // SAFETY: the application's function with its own argument.
+            if unsafe { open(self.0.m_pArg) } != CopKernel::Successful.code() {
+                return Err(CopKernel::CcmStoreHwError);
+            }
+        }
+        Ok(())
+    }
+}
 
 fn nv(r: tCopKernel) -> Result<(), NvFault> {
     if r == CopKernel::Successful.code() {
@@ -250,12 +267,7 @@ pub extern "C" fn CcmInitStore() -> tCopKernel {
             .get(global::current())
             .map(|c| unsafe { &*c.0.get() })
         {
-            if let Some(open) = s.0.m_fpOpen {
-                // SAFETY: the application's function with its own argument.
-                if unsafe { open(s.0.m_pArg) } != CopKernel::Successful.code() {
-                    return Err(CopKernel::CcmStoreHwError);
-                }
-            }
+            s.open()?;
         }
         i.stack.init_store()
     }))
