@@ -25,7 +25,9 @@ address-taken functions matching the regex TARGETS, or, with
 TARGETS = @SYM[,SYM...], to the functions whose addresses the data objects
 SYM hold (a C table of function pointers such as an application's
 tCopStoreDriver: a call through one of its fields reaches only what it
-holds). The first rule whose SITE matches applies. A rule is sound only
+holds). A target matches when any name of its body does (the compiler
+gives identical functions one body). The first rule whose SITE matches
+applies. A rule is sound only
 for a site whose every pointer call is of the named kind, so the library
 keeps such calls in functions of their own (store::Nv's methods for the
 storage driver); a rule must not name targets that match its own SITE
@@ -244,7 +246,16 @@ def main():
             if k not in csu or csu[k][0] < v[0]:
                 csu[k] = v
     funcs, consts = disassemble(args.elf, args.objdump)
-    demangle_all(funcs)
+    # Functions with one body share an address; the disassembly names one,
+    # a rule's target may match another of its names.
+    names_at = {}
+    nm = subprocess.run([args.objdump.replace("objdump", "nm"), args.elf], check=True,
+                        stdout=subprocess.PIPE, universal_newlines=True).stdout
+    for line in nm.splitlines():
+        parts = line.split()
+        if len(parts) == 3 and parts[1] in "Tt":
+            names_at.setdefault(int(parts[0], 16) & ~1, set()).add(parts[2])
+    demangle_all(list(funcs) + [n for ns in names_at.values() for n in ns])
     by_addr = {f["addr"]: name for name, f in funcs.items()}
     taken = sorted(by_addr[a] for a in (address_words(data, end, sections) | consts) & set(by_addr))
 
@@ -286,7 +297,8 @@ def main():
     def targeted(rule, c):
         if isinstance(rule, set):
             return c in rule
-        return rule.search(rule_name(c)) is not None
+        names = {c} | names_at.get(funcs[c]["addr"], set())
+        return any(rule.search(rule_name(n)) is not None for n in names)
 
     nonnest = re.compile(args.nonnesting) if args.nonnesting else None
     pump = re.compile(args.pump) if args.pump else None
@@ -367,9 +379,7 @@ def main():
         with open(args.entries) as f:
             entries += [line.strip() for line in f if line.strip()]
     entries = list(dict.fromkeys(entries))  # once each, in order
-    # Functions with one body share an address; the disassembly names one.
-    nm = subprocess.run([args.objdump.replace("objdump", "nm"), args.elf], check=True,
-                        stdout=subprocess.PIPE, universal_newlines=True).stdout
+    # The other names of a body (see names_at) as entry points.
     for line in nm.splitlines():
         parts = line.split()
         if len(parts) == 3 and parts[1] in "Tt" and parts[2] not in funcs:
