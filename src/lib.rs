@@ -39,6 +39,9 @@
     )
 )]
 
+#[macro_use]
+mod cenum;
+
 pub mod ccm;
 pub mod config;
 pub mod emcy;

@@ -58,21 +58,22 @@ pub const DEFAULT_TIMEOUT_TICKS: u32 = 5000;
 /// CRC); a server that switches anyway is followed.
 pub const BLOCK_UPLOAD_PST: u8 = 0;
 
-/// Transfer state (`tSdocState`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[repr(u8)]
-pub enum SdocState {
-    /// kSdocTransferNotActive.
-    #[default]
-    NotActive = 0,
-    /// kSdocTransferRunning.
-    Running = 1,
-    /// kSdocTransferTxAborted: this client aborted (timeout, bad reply).
-    TxAborted = 2,
-    /// kSdocTransferRxAborted: the server aborted.
-    RxAborted = 3,
-    /// kSdocTransferFinished.
-    Finished = 4,
+c_enum! {
+    /// Transfer state (`tSdocState`).
+    #[derive(Default)]
+    pub enum SdocState: u8, fn from_u8(u8) {
+        /// kSdocTransferNotActive.
+        #[default]
+        NotActive = 0,
+        /// kSdocTransferRunning.
+        Running = 1,
+        /// kSdocTransferTxAborted: this client aborted (timeout, bad reply).
+        TxAborted = 2,
+        /// kSdocTransferRxAborted: the server aborted.
+        RxAborted = 3,
+        /// kSdocTransferFinished.
+        Finished = 4,
+    }
 }
 
 /// Protocol and direction of a transfer (`tSdocType`).
