@@ -16,7 +16,8 @@
 //!
 //! gives `#[repr(u8)] pub enum NmtState` (deriving `Clone`, `Copy`, `Debug`,
 //! `PartialEq`, `Eq`, `Hash`; further attributes pass through), the
-//! associated constant `ALL` (every value in declaration order) and
+//! method `code()` (the number), the associated constant `ALL` (every value
+//! in declaration order) and
 //! `pub const fn from_u8(u8) -> Option<NmtState>` (`None` for a number the
 //! list does not have; the decoder's parameter may be wider than the
 //! representation, as `DataType::from_code(u16)` is).
@@ -37,6 +38,11 @@ macro_rules! c_enum {
         }
 
         impl $name {
+            /// The number (the C value).
+            pub const fn code(self) -> $repr {
+                self as $repr
+            }
+
             /// Every value, in declaration order.
             pub const ALL: &'static [$name] = &[$($name::$variant),+];
 

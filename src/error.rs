@@ -163,11 +163,6 @@ c_enum! {
 }
 
 impl CopKernel {
-    /// The numeric `tCopKernel` value.
-    pub const fn code(self) -> u32 {
-        self as u32
-    }
-
     /// True for `kCopSuccessful`.
     pub const fn is_ok(self) -> bool {
         matches!(self, CopKernel::Successful)
@@ -238,13 +233,6 @@ c_enum! {
         /// SDOAC_DATA_NOT_TRANSF_DUE_DEVICE_STATE
         DeviceState = 0x0800_0022,
         NoObjectDictionary = 0x0800_0023,
-    }
-}
-
-impl SdoAbort {
-    /// The 32-bit abort code as sent on the wire.
-    pub const fn code(self) -> u32 {
-        self as u32
     }
 }
 

@@ -376,6 +376,18 @@ impl ObdSubEntry {
         })
     }
 
+    /// The constant data of a ROM entry or ROM string ([`kind::ROM`],
+    /// [`kind::ROM_VSTRING`]): `m_dwSize` bytes at `m_pDefault`.
+    #[inline]
+    fn rom_bytes(&self) -> Option<&'static [u8]> {
+        if self.m_pDefault.is_null() {
+            return None;
+        }
+        // SAFETY: constant entries and constant strings point to m_dwSize
+        // bytes of static constant data.
+        Some(unsafe { core::slice::from_raw_parts(self.m_pDefault as *const u8, self.size()) })
+    }
+
     /// Storage of element `element` (0 for plain subindices; arrays use the
     /// element number 0..n-1 with elements laid out one after the other).
     pub fn storage(&self, element: usize) -> Option<Storage> {
@@ -384,16 +396,7 @@ impl ObdSubEntry {
         element.checked_mul(size)?;
         match self.m_bKind {
             kind::RAM => self.ram_var(element).map(Storage::Ram),
-            kind::ROM => {
-                if self.m_pDefault.is_null() {
-                    return None;
-                }
-                // SAFETY: constant entries point to m_dwSize bytes of static
-                // constant data.
-                Some(Storage::Rom(unsafe {
-                    core::slice::from_raw_parts(self.m_pDefault as *const u8, size)
-                }))
-            }
+            kind::ROM => self.rom_bytes().map(Storage::Rom),
             kind::RAM_VSTRING => {
                 if self.m_pCurrent.is_null() {
                     return None;
@@ -403,15 +406,7 @@ impl ObdSubEntry {
                     core::slice::from_raw_parts(self.m_pCurrent as *const AtomicU8, size + 1)
                 }))
             }
-            kind::ROM_VSTRING => {
-                if self.m_pDefault.is_null() {
-                    return None;
-                }
-                // SAFETY: constant strings are m_dwSize bytes of static data.
-                Some(Storage::RomString(unsafe {
-                    core::slice::from_raw_parts(self.m_pDefault as *const u8, size)
-                }))
-            }
+            kind::ROM_VSTRING => self.rom_bytes().map(Storage::RomString),
             kind::VAR_ENTRY => {
                 if self.m_pCurrent.is_null() {
                     return None;

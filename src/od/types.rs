@@ -54,79 +54,35 @@ pub enum Encoding {
 }
 
 impl DataType {
-    /// The `kObdTyp*` value.
-    pub const fn code(self) -> u8 {
-        self as u8
-    }
-
     /// Byte conversion rule for this type.
     pub const fn encoding(self) -> Encoding {
         use DataType::*;
+        const fn signed(wire: usize) -> Encoding {
+            Encoding::Numeric { wire, signed: true }
+        }
+        const fn unsigned(wire: usize) -> Encoding {
+            Encoding::Numeric {
+                wire,
+                signed: false,
+            }
+        }
         match self {
-            Bool | UInt8 => Encoding::Numeric {
-                wire: 1,
-                signed: false,
-            },
-            Int8 => Encoding::Numeric {
-                wire: 1,
-                signed: true,
-            },
-            Int16 => Encoding::Numeric {
-                wire: 2,
-                signed: true,
-            },
-            UInt16 => Encoding::Numeric {
-                wire: 2,
-                signed: false,
-            },
-            Int24 => Encoding::Numeric {
-                wire: 3,
-                signed: true,
-            },
-            UInt24 => Encoding::Numeric {
-                wire: 3,
-                signed: false,
-            },
-            Int32 => Encoding::Numeric {
-                wire: 4,
-                signed: true,
-            },
-            UInt32 | Real32 => Encoding::Numeric {
-                wire: 4,
-                signed: false,
-            },
-            Int40 => Encoding::Numeric {
-                wire: 5,
-                signed: true,
-            },
-            UInt40 => Encoding::Numeric {
-                wire: 5,
-                signed: false,
-            },
-            Int48 => Encoding::Numeric {
-                wire: 6,
-                signed: true,
-            },
-            UInt48 => Encoding::Numeric {
-                wire: 6,
-                signed: false,
-            },
-            Int56 => Encoding::Numeric {
-                wire: 7,
-                signed: true,
-            },
-            UInt56 => Encoding::Numeric {
-                wire: 7,
-                signed: false,
-            },
-            Int64 => Encoding::Numeric {
-                wire: 8,
-                signed: true,
-            },
-            UInt64 | Real64 => Encoding::Numeric {
-                wire: 8,
-                signed: false,
-            },
+            Bool | UInt8 => unsigned(1),
+            Int8 => signed(1),
+            Int16 => signed(2),
+            UInt16 => unsigned(2),
+            Int24 => signed(3),
+            UInt24 => unsigned(3),
+            Int32 => signed(4),
+            UInt32 | Real32 => unsigned(4),
+            Int40 => signed(5),
+            UInt40 => unsigned(5),
+            Int48 => signed(6),
+            UInt48 => unsigned(6),
+            Int56 => signed(7),
+            UInt56 => unsigned(7),
+            Int64 => signed(8),
+            UInt64 | Real64 => unsigned(8),
             TimeOfDay | TimeDiff => Encoding::Time,
             VString | OString | UString | Domain => Encoding::Bytes,
         }
