@@ -13,13 +13,11 @@
 use core::ffi::c_void;
 
 use super::callbacks::{pdo_slot, set_pdo};
-use super::driver::TgtClock;
-use super::global::{self, code, drain};
+use super::global::{self, code};
 use super::ptr::{self, c_try};
 use super::types::{BYTE, DWORD, WORD, tCopKernel};
 use crate::error::CopKernel;
 use crate::pdo::{Direction, PDO_MAX_MAPPENTRIES, PdoParam, StaticPdoParam};
-use crate::port::Clock;
 
 pub use super::types::tPdoCallback;
 
@@ -218,8 +216,7 @@ pub unsafe extern "C" fn CcmDefinePdoTab(
 ) -> tCopKernel {
     // SAFETY: the caller's contract (wNumOfPdos_p entries; NULL refused).
     let tab = c_try!(unsafe { ptr::slice(pPdoTab_p, usize::from(wNumOfPdos_p)) });
-    let now = TgtClock.now();
-    let r = global::with(|i| {
+    global::run_at(|i, now| {
         for p in tab {
             let param = pdo_param(p)?;
             if p.m_bValidFlag & pdo_valid::CALLBACK != 0 {
@@ -231,9 +228,7 @@ pub unsafe extern "C" fn CcmDefinePdoTab(
             i.stack.define_pdo(&param, now)?;
         }
         Ok(())
-    });
-    drain();
-    code(r)
+    })
 }
 
 /// `CcmDefineStaticPdoTab`: defines PDOs whose data are a byte block of
@@ -264,8 +259,7 @@ pub unsafe extern "C" fn CcmDefineStaticPdoTab(
             return CopKernel::PdoLengthExceeded.code();
         }
     }
-    let now = TgtClock.now();
-    let r = global::with(|i| {
+    global::run_at(|i, now| {
         for p in tab {
             let data = if p.m_bSize == 0 {
                 &[]
@@ -290,9 +284,7 @@ pub unsafe extern "C" fn CcmDefineStaticPdoTab(
             i.stack.define_static_pdo(&param, now)?;
         }
         Ok(())
-    });
-    drain();
-    code(r)
+    })
 }
 
 /// `CcmSignalStaticPdo`: signals that a TPDO's data changed. Types 254/255
@@ -311,10 +303,9 @@ pub extern "C" fn CcmSignalStaticPdo(wCommuIndex_p: WORD) -> tCopKernel {
 /// changed ones. Returns kCopSuccessful.
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmSignalCheckVar() -> tCopKernel {
-    code(global::with(|i| {
+    global::run(|i| {
         i.stack.signal_check_var();
-        Ok(())
-    }))
+    })
 }
 
 /// `CcmSignalVar`: signals every valid TPDO that maps the variable at
@@ -339,10 +330,7 @@ pub extern "C" fn CcmSignalVar(pVar_p: *mut c_void) -> tCopKernel {
 /// driver's code (e.g. kCopCdrvTxBuffLowOverrun).
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmSendPdo(wCommuIndex_p: WORD) -> tCopKernel {
-    let now = TgtClock.now();
-    let r = global::with(|i| i.stack.send_pdo(&mut i.port, wCommuIndex_p, now));
-    drain();
-    code(r)
+    global::run_at(|i, now| i.stack.send_pdo(&mut i.port, wCommuIndex_p, now))
 }
 
 /// `CcmInitSyncConsumer`: (re)reads 0x1005–0x1007. The SYNC consumer is
@@ -365,13 +353,10 @@ pub extern "C" fn CcmConfigSyncConsumer(
     dwSyncId_p: DWORD,
     dwSyncWindowLength_p: DWORD,
 ) -> tCopKernel {
-    let now = TgtClock.now();
-    let r = global::with(|i| {
+    global::run_at(|i, now| {
         i.stack
             .config_sync_consumer(dwSyncId_p, dwSyncWindowLength_p, now)
-    });
-    drain();
-    code(r)
+    })
 }
 
 /// `CcmEnterCriticalSectionPdoProcess`: until the matching leave,

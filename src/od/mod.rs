@@ -448,6 +448,25 @@ impl WriteHooks for NoHooks {
     fn after_store(&mut self, _: &ObjectDictionary, _: &Object) {}
 }
 
+/// An unsigned integer type a value is read as
+/// ([`ObjectDictionary::read_or`]).
+pub trait UintValue: Copy {
+    /// The low bits of `v` (what `v as Self` keeps).
+    fn truncate(v: u64) -> Self;
+}
+
+macro_rules! uint_value {
+    ($($t:ty),+) => {
+        $(impl UintValue for $t {
+            #[inline]
+            fn truncate(v: u64) -> Self {
+                v as $t
+            }
+        })+
+    };
+}
+uint_value!(u8, u16, u32, u64);
+
 /// The object dictionary.
 #[derive(Clone, Copy, Debug)]
 pub struct ObjectDictionary {
@@ -849,6 +868,14 @@ impl ObjectDictionary {
     /// Reads a numeric value as an unsigned integer (stack-internal).
     pub fn read_uint(&self, index: u16, sub: u8) -> Result<u64, OdError> {
         self.entry(index)?.read_uint(sub)
+    }
+
+    /// [`ObjectDictionary::read_uint`] as a `T` (its low bits), or
+    /// `default` where the object does not exist or cannot be read: the
+    /// read of a configuration value that the stack keeps itself on a
+    /// dictionary without the object.
+    pub fn read_or<T: UintValue>(&self, index: u16, sub: u8, default: T) -> T {
+        self.read_uint(index, sub).map_or(default, T::truncate)
     }
 
     /// Reads an object for an application or SDO client: existence and

@@ -198,6 +198,14 @@ pub enum CbArg<'a> {
     StringDomain(&'a mut ObdVStringDomain),
 }
 
+/// The table's pointer to an optional default value (NULL for none).
+const fn default_ptr(default: Option<&'static [u8]>) -> *const c_void {
+    match default {
+        Some(d) => d.as_ptr() as *const c_void,
+        None => core::ptr::null(),
+    }
+}
+
 impl ObdSubEntry {
     /// A RAM variable owned by Rust code.
     pub const fn ram(
@@ -213,10 +221,7 @@ impl ObdSubEntry {
             m_bAccess: access.0,
             m_bKind: kind::RAM,
             m_dwSize: current.len() as u32,
-            m_pDefault: match default {
-                Some(d) => d.as_ptr() as *const c_void,
-                None => core::ptr::null(),
-            },
+            m_pDefault: default_ptr(default),
             m_pCurrent: current.as_ptr() as *mut c_void,
         }
     }
@@ -267,11 +272,23 @@ impl ObdSubEntry {
 
     /// A constant.
     pub const fn rom(sub: u8, typ: DataType, access: Access, value: &'static [u8]) -> ObdSubEntry {
+        Self::constant(sub, typ, kind::ROM, access, value)
+    }
+
+    /// A constant of `kind` ([`kind::ROM`], [`kind::ROM_VSTRING`]): never
+    /// writable, `value` is the whole object.
+    const fn constant(
+        sub: u8,
+        typ: DataType,
+        kind: u8,
+        access: Access,
+        value: &'static [u8],
+    ) -> ObdSubEntry {
         ObdSubEntry {
             m_bSubIndex: sub,
             m_bType: typ.code(),
             m_bAccess: (access.0 & !Access::WRITE) | Access::CONST,
-            m_bKind: kind::ROM,
+            m_bKind: kind,
             m_dwSize: value.len() as u32,
             m_pDefault: value.as_ptr() as *const c_void,
             m_pCurrent: core::ptr::null_mut(),
@@ -300,15 +317,7 @@ impl ObdSubEntry {
 
     /// A constant visible string.
     pub const fn rom_string(sub: u8, access: Access, value: &'static [u8]) -> ObdSubEntry {
-        ObdSubEntry {
-            m_bSubIndex: sub,
-            m_bType: DataType::VString.code(),
-            m_bAccess: (access.0 & !Access::WRITE) | Access::CONST,
-            m_bKind: kind::ROM_VSTRING,
-            m_dwSize: value.len() as u32,
-            m_pDefault: value.as_ptr() as *const c_void,
-            m_pCurrent: core::ptr::null_mut(),
-        }
+        Self::constant(sub, DataType::VString, kind::ROM_VSTRING, access, value)
     }
 
     /// An application-attached variable (USERDEF / DOMAIN).
@@ -326,10 +335,7 @@ impl ObdSubEntry {
             m_bAccess: access.0 | Access::VAR,
             m_bKind: kind::VAR_ENTRY,
             m_dwSize: size,
-            m_pDefault: match default {
-                Some(d) => d.as_ptr() as *const c_void,
-                None => core::ptr::null(),
-            },
+            m_pDefault: default_ptr(default),
             m_pCurrent: entry as *const ObdVarEntry as *mut c_void,
         }
     }

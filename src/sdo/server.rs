@@ -409,6 +409,25 @@ impl SdoServer {
     }
 
     /// Ends the transfer and builds the abort frame.
+    /// The checks of a segmented or block download's initiate request:
+    /// the object must be writable with the announced size, and the size
+    /// must fit the buffer. Gives the size, or the abort to send.
+    fn accept_download(
+        &mut self,
+        od: &ObjectDictionary,
+        mux: Multiplexer,
+        size: Option<u32>,
+    ) -> Result<Option<usize>, ServerFrame> {
+        let size = size.map(|s| usize::try_from(s).unwrap_or(usize::MAX));
+        if let Err(e) = od.begin_write(mux.index, mux.sub, size) {
+            return Err(self.abort(mux, e.abort));
+        }
+        if size.is_some_and(|s| s > self.buf.len()) {
+            return Err(self.abort(mux, SdoAbort::LengthTooHigh.code()));
+        }
+        Ok(size)
+    }
+
     fn abort(&mut self, mux: Multiplexer, code: u32) -> ServerFrame {
         self.transfer = Transfer::Idle;
         ServerFrame::Abort { mux, code }
@@ -627,13 +646,10 @@ impl SdoServer {
                 }
             }
             Initiate::Segmented { size } => {
-                let size = size.map(|s| usize::try_from(s).unwrap_or(usize::MAX));
-                if let Err(e) = od.begin_write(mux.index, mux.sub, size) {
-                    return self.abort(mux, e.abort);
-                }
-                if size.is_some_and(|s| s > self.buf.len()) {
-                    return self.abort(mux, SdoAbort::LengthTooHigh.code());
-                }
+                let size = match self.accept_download(od, mux, size) {
+                    Ok(size) => size,
+                    Err(abort) => return abort,
+                };
                 self.transfer = Transfer::Download(Download {
                     mux,
                     size,
@@ -695,13 +711,10 @@ impl SdoServer {
         size: Option<u32>,
         now: Ticks,
     ) -> ServerFrame {
-        let size = size.map(|s| usize::try_from(s).unwrap_or(usize::MAX));
-        if let Err(e) = od.begin_write(mux.index, mux.sub, size) {
-            return self.abort(mux, e.abort);
-        }
-        if size.is_some_and(|s| s > self.buf.len()) {
-            return self.abort(mux, SdoAbort::LengthTooHigh.code());
-        }
+        let size = match self.accept_download(od, mux, size) {
+            Ok(size) => size,
+            Err(abort) => return abort,
+        };
         self.transfer = Transfer::BlockDown(BlockDownload {
             mux,
             size,
