@@ -15,7 +15,7 @@ use core::ffi::c_void;
 use super::callbacks::{pdo_slot, set_pdo};
 use super::global::{self, code};
 use super::ptr::{self, c_try};
-use super::types::{BYTE, DWORD, WORD, tCopKernel};
+use super::types::{BYTE, DWORD, WORD, assert_offsets, tCopKernel};
 use crate::error::CopKernel;
 use crate::pdo::{Direction, PDO_MAX_MAPPENTRIES, PdoParam, StaticPdoParam};
 
@@ -123,29 +123,35 @@ const PTR: usize = core::mem::size_of::<*const c_void>();
 const fn round_up(n: usize, to: usize) -> usize {
     n.div_ceil(to) * to
 }
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoParam, m_wPdoCommuIndex), 2);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoParam, m_bNodeID), 5);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoParam, m_dwCanId), 8);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoParam, m_bTxTyp), 12);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoParam, m_wInhibitTime), 14);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoParam, m_wEventTime), 16);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoParam, m_bNrOfEntries), 18);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoParam, m_adwMappParam), 20);
+assert_offsets!(tPdoParam {
+    m_wPdoCommuIndex: 2,
+    m_bNodeID: 5,
+    m_dwCanId: 8,
+    m_bTxTyp: 12,
+    m_wInhibitTime: 14,
+    m_wEventTime: 16,
+    m_bNrOfEntries: 18,
+    m_adwMappParam: 20,
+});
 // ARM (ILP32): 56 bytes with 8 entries; LP64 host: 64.
 static_assertions::const_assert_eq!(
     core::mem::size_of::<tPdoParam>(),
     round_up(20 + 4 * PDO_MAX_MAPPENTRIES, PTR) + PTR
 );
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoStaticParam, m_dwCanId), 4);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoStaticParam, m_bTxTyp), 8);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoStaticParam, m_wInhibitTime), 10);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoStaticParam, m_wEventTime), 12);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoStaticParam, m_bSize), 14);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoStaticParam, m_pVarData), 16);
+assert_offsets!(tPdoStaticParam {
+    m_dwCanId: 4,
+    m_bTxTyp: 8,
+    m_wInhibitTime: 10,
+    m_wEventTime: 12,
+    m_bSize: 14,
+    m_pVarData: 16,
+});
 // ARM: 24 bytes; LP64 host: 32.
 static_assertions::const_assert_eq!(core::mem::size_of::<tPdoStaticParam>(), 16 + 2 * PTR);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tMPdoParam, m_bSubindex), 4);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tMPdoParam, m_pData), round_up(5, PTR));
+assert_offsets!(tMPdoParam {
+    m_bSubindex: 4,
+    m_pData: round_up(5, PTR),
+});
 // ARM: 16 bytes; LP64 host: 24.
 static_assertions::const_assert_eq!(
     core::mem::size_of::<tMPdoParam>(),

@@ -67,11 +67,7 @@ pub struct NmtMaster {
     slaves: [Slave; CAPACITY],
 }
 
-impl Default for NmtMaster {
-    fn default() -> Self {
-        Self::new()
-    }
-}
+crate::od::decl::default_is_new!(NmtMaster);
 
 fn valid_node(node: u8) -> CopResult {
     if (1..=127).contains(&node) {

@@ -226,6 +226,18 @@ impl ObdSubEntry {
         }
     }
 
+    /// A communication parameter's variable (`SRW`, the form objdef.h's
+    /// PDO and SRDO parameter macros give every variable subindex), with
+    /// its default.
+    pub const fn param(
+        sub: u8,
+        typ: DataType,
+        current: &'static [AtomicU8],
+        default: &'static [u8],
+    ) -> ObdSubEntry {
+        Self::ram(sub, typ, Access::SRW, current, Some(default))
+    }
+
     /// A RAM variable with a value range: `limits` holds default, low and
     /// high value one after the other (each `current.len()` bytes, native).
     pub const fn ram_range(
@@ -640,11 +652,7 @@ impl ObdVarEntry {
     }
 }
 
-impl Default for ObdVarEntry {
-    fn default() -> Self {
-        Self::new()
-    }
-}
+super::decl::default_is_new!(ObdVarEntry);
 
 // ---------------------------------------------------------------------
 // The pool of the dynamic OD

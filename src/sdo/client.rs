@@ -159,11 +159,7 @@ pub struct SdoClient {
     channels: [Channel; CAPACITY],
 }
 
-impl Default for SdoClient {
-    fn default() -> Self {
-        Self::new()
-    }
-}
+crate::od::decl::default_is_new!(SdoClient);
 
 fn cob_id(v: u32) -> Option<CanId> {
     if v & 0x8000_0000 != 0 {

@@ -231,11 +231,7 @@ pub struct SdoServer {
     buf: [u8; SDOS_BUFFER_SIZE],
 }
 
-impl Default for SdoServer {
-    fn default() -> Self {
-        Self::new()
-    }
-}
+crate::od::decl::default_is_new!(SdoServer);
 
 impl SdoServer {
     /// An unconfigured server: it answers nothing until

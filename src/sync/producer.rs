@@ -80,11 +80,7 @@ pub struct SyncProducer {
     next: Ticks,
 }
 
-impl Default for SyncProducer {
-    fn default() -> Self {
-        Self::new()
-    }
-}
+crate::od::decl::default_is_new!(SyncProducer);
 
 impl SyncProducer {
     /// A producer that sends nothing.
