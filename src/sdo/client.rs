@@ -753,14 +753,22 @@ fn step(t: &mut Transfer, reply: ServerFrame) -> Step {
 /// belong to the transfer.
 fn block_step(t: &mut Transfer, dir: Direction, phase: Phase, reply: ServerFrame) -> Option<Step> {
     Some(match (dir, phase, reply) {
+        // The answer to an initiate request for another object.
         (
             Direction::BlockDownload,
             Phase::InitiateSent,
-            ServerFrame::BlockDownloadInitiateResponse { mux, crc, blksize },
+            ServerFrame::BlockDownloadInitiateResponse { mux, .. },
+        )
+        | (
+            Direction::BlockUpload,
+            Phase::InitiateSent,
+            ServerFrame::BlockUploadInitiateResponse { mux, .. },
+        ) if mux != t.mux => Step::Abort(SdoAbort::General.code()),
+        (
+            Direction::BlockDownload,
+            Phase::InitiateSent,
+            ServerFrame::BlockDownloadInitiateResponse { crc, blksize, .. },
         ) => {
-            if mux != t.mux {
-                return Some(Step::Abort(SdoAbort::General.code()));
-            }
             if !valid_blksize(blksize) {
                 return Some(Step::Abort(SdoAbort::InvalidBlockSize.code()));
             }
@@ -793,11 +801,8 @@ fn block_step(t: &mut Transfer, dir: Direction, phase: Phase, reply: ServerFrame
         (
             Direction::BlockUpload,
             Phase::InitiateSent,
-            ServerFrame::BlockUploadInitiateResponse { mux, crc, size },
+            ServerFrame::BlockUploadInitiateResponse { crc, size, .. },
         ) => {
-            if mux != t.mux {
-                return Some(Step::Abort(SdoAbort::General.code()));
-            }
             if size.is_some_and(|s| s as usize > t.len) {
                 return Some(Step::Abort(SdoAbort::OutOfMemory.code()));
             }
