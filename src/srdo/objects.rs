@@ -260,17 +260,27 @@ pub const fn crc_subs<const S: usize>(
     subs
 }
 
+/// The one-byte objects 0x1300 and 0x13FE in a module `$m`: the object
+/// `$crate::srdo::$index` with the subindex table `objects::$subs`.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __obd_srdo_byte_object {
+    ($vis:vis mod $m:ident, $index:ident, $subs:ident) => {
+        #[allow(missing_docs)]
+        $vis mod $m {
+            pub const INDEX: u16 = $crate::srdo::$index;
+            pub static VALUE: [::core::sync::atomic::AtomicU8; 1] = $crate::od::decl::zeroed();
+            pub static SUBS: [$crate::od::ObdSubEntry; 1] =
+                $crate::srdo::objects::$subs(&VALUE);
+        }
+    };
+}
+
 /// `OBD_CREATE_SRDO_GFC_PARAM()`: object 0x1300 in a module `$m`.
 #[macro_export]
 macro_rules! obd_create_srdo_gfc_param {
     ($vis:vis mod $m:ident) => {
-        #[allow(missing_docs)]
-        $vis mod $m {
-            pub const INDEX: u16 = $crate::srdo::GFC_PARAM_INDEX;
-            pub static VALUE: [::core::sync::atomic::AtomicU8; 1] = $crate::od::decl::zeroed();
-            pub static SUBS: [$crate::od::ObdSubEntry; 1] =
-                $crate::srdo::objects::gfc_param_subs(&VALUE);
-        }
+        $crate::__obd_srdo_byte_object!($vis mod $m, GFC_PARAM_INDEX, gfc_param_subs);
     };
 }
 
@@ -315,13 +325,7 @@ macro_rules! obd_create_srdo_mapp {
 #[macro_export]
 macro_rules! obd_create_srdo_cfg_valid {
     ($vis:vis mod $m:ident) => {
-        #[allow(missing_docs)]
-        $vis mod $m {
-            pub const INDEX: u16 = $crate::srdo::CONFIG_VALID_INDEX;
-            pub static VALUE: [::core::sync::atomic::AtomicU8; 1] = $crate::od::decl::zeroed();
-            pub static SUBS: [$crate::od::ObdSubEntry; 1] =
-                $crate::srdo::objects::cfg_valid_subs(&VALUE);
-        }
+        $crate::__obd_srdo_byte_object!($vis mod $m, CONFIG_VALID_INDEX, cfg_valid_subs);
     };
 }
 
