@@ -172,6 +172,9 @@ impl CopKernel {
 /// Result type of the core: `Err` carries a SYS TEC code.
 pub type CopResult<T = ()> = Result<T, CopKernel>;
 
+/// Result of a dictionary access: `Err` says why it was refused.
+pub type OdResult<T = ()> = Result<T, OdError>;
+
 /// Converts a `CopResult<()>` into the code the C API returns.
 pub fn to_code(r: CopResult) -> u32 {
     match r {
