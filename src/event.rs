@@ -9,81 +9,81 @@
 
 use crate::error::CopKernel;
 
-/// NMT states (`kNodeState*`, CiA 301 values).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[repr(u8)]
-pub enum NmtState {
-    /// Initialisation (before `CcmConnectToNet`).
-    Initialisation = 0x00,
-    /// Stopped.
-    Stopped = 0x04,
-    /// Operational.
-    Operational = 0x05,
-    /// Pre-operational.
-    PreOperational = 0x7F,
+c_enum! {
+    /// NMT states (`kNodeState*`, CiA 301 values).
+    pub enum NmtState: u8, fn from_u8(u8) {
+        /// Initialisation (before `CcmConnectToNet`).
+        Initialisation = 0x00,
+        /// Stopped.
+        Stopped = 0x04,
+        /// Operational.
+        Operational = 0x05,
+        /// Pre-operational.
+        PreOperational = 0x7F,
+    }
 }
 
-/// NMT events passed to the application's NMT callback (`tNmtEvent`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[repr(u8)]
-pub enum NmtEvent {
-    /// kNmtEvEnterInitialising.
-    EnterInitialising = 0x01,
-    /// kNmtEvResetNode: application objects were reset to their defaults.
-    ResetNode = 0x02,
-    /// kNmtEvPreResetCommunication: communication objects are about to be reset.
-    PreResetCommunication = 0x03,
-    /// kNmtEvResetCommunication: communication objects have their defaults;
-    /// the application (re)writes its configuration now.
-    ResetCommunication = 0x04,
-    /// kNmtEvPostResetCommunication: the modules took over the configuration.
-    PostResetCommunication = 0x05,
-    /// kNmtEvEnterPreOperational.
-    EnterPreOperational = 0x10,
-    /// kNmtEvEnterOperational.
-    EnterOperational = 0x20,
-    /// kNmtEvEnterStopped.
-    EnterStopped = 0x30,
+c_enum! {
+    /// NMT events passed to the application's NMT callback (`tNmtEvent`).
+    pub enum NmtEvent: u8, fn from_u8(u8) {
+        /// kNmtEvEnterInitialising.
+        EnterInitialising = 0x01,
+        /// kNmtEvResetNode: application objects were reset to their defaults.
+        ResetNode = 0x02,
+        /// kNmtEvPreResetCommunication: communication objects are about to be reset.
+        PreResetCommunication = 0x03,
+        /// kNmtEvResetCommunication: communication objects have their defaults;
+        /// the application (re)writes its configuration now.
+        ResetCommunication = 0x04,
+        /// kNmtEvPostResetCommunication: the modules took over the configuration.
+        PostResetCommunication = 0x05,
+        /// kNmtEvEnterPreOperational.
+        EnterPreOperational = 0x10,
+        /// kNmtEvEnterOperational.
+        EnterOperational = 0x20,
+        /// kNmtEvEnterStopped.
+        EnterStopped = 0x30,
+    }
 }
 
-/// Program-flow monitor events (`tProgMonEvent`, manual 2.9.4).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[repr(u8)]
-pub enum ProgMonEvent {
-    /// kSrdoPMEvSctChecked: the SCT of a receive SRDO was checked.
-    SctChecked = 0x01,
-    /// kSrdoPMEvSctNotCheckedItIsTx.
-    SctNotCheckedItIsTx = 0x02,
-    /// kSrdoPMEvSctNotCheckedItIsInvalid.
-    SctNotCheckedItIsInvalid = 0x03,
-    /// kSrdoPMEvSctNotCheckedNotOperational.
-    SctNotCheckedNotOperational = 0x04,
-    /// kSrdoPMEvSrdoError.
-    SrdoError = 0x05,
-    /// kSrdoPMEvSrdoReceived.
-    SrdoReceived = 0x06,
-    /// kSrdoPMEvSrdoTransmitted.
-    SrdoTransmitted = 0x07,
+c_enum! {
+    /// Program-flow monitor events (`tProgMonEvent`, manual 2.9.4).
+    pub enum ProgMonEvent: u8, fn from_u8(u8) {
+        /// kSrdoPMEvSctChecked: the SCT of a receive SRDO was checked.
+        SctChecked = 0x01,
+        /// kSrdoPMEvSctNotCheckedItIsTx.
+        SctNotCheckedItIsTx = 0x02,
+        /// kSrdoPMEvSctNotCheckedItIsInvalid.
+        SctNotCheckedItIsInvalid = 0x03,
+        /// kSrdoPMEvSctNotCheckedNotOperational.
+        SctNotCheckedNotOperational = 0x04,
+        /// kSrdoPMEvSrdoError.
+        SrdoError = 0x05,
+        /// kSrdoPMEvSrdoReceived.
+        SrdoReceived = 0x06,
+        /// kSrdoPMEvSrdoTransmitted.
+        SrdoTransmitted = 0x07,
+    }
 }
 
-/// NMT error control events (`tNmtErrCtrlEvent`).
-#[allow(missing_docs)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[repr(u8)]
-pub enum ErrCtrlEvent {
-    Idle = 0x00,
-    LgConnected = 0x10,
-    LgMsgLost = 0x11,
-    LgLostConnection = 0x12,
-    BootupReceived = 0x20,
-    LgNodeStateChanged = 0x31,
-    LgToggleError = 0x32,
-    LgSuspended = 0x33,
-    LgNoAnswer = 0x34,
-    HbcConnected = 0x40,
-    HbcConnectionLost = 0x41,
-    HbcNodeStateChanged = 0x42,
-    Unknown = 0xFF,
+c_enum! {
+    /// NMT error control events (`tNmtErrCtrlEvent`).
+    #[allow(missing_docs)]
+    pub enum ErrCtrlEvent: u8, fn from_u8(u8) {
+        Idle = 0x00,
+        LgConnected = 0x10,
+        LgMsgLost = 0x11,
+        LgLostConnection = 0x12,
+        BootupReceived = 0x20,
+        LgNodeStateChanged = 0x31,
+        LgToggleError = 0x32,
+        LgSuspended = 0x33,
+        LgNoAnswer = 0x34,
+        HbcConnected = 0x40,
+        HbcConnectionLost = 0x41,
+        HbcNodeStateChanged = 0x42,
+        Unknown = 0xFF,
+    }
 }
 
 /// An event for the application.

@@ -39,6 +39,9 @@
     )
 )]
 
+#[macro_use]
+mod cenum;
+
 pub mod ccm;
 pub mod config;
 pub mod emcy;
@@ -63,4 +66,4 @@ pub mod testod;
 #[allow(unsafe_code)]
 pub mod ffi;
 
-pub use error::{CopKernel, CopResult, OdError, SdoAbort};
+pub use error::{CopKernel, CopResult, OdError, OdResult, SdoAbort};

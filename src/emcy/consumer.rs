@@ -38,11 +38,7 @@ pub struct EmcyConsumer {
     producers: [u8; CAPACITY],
 }
 
-impl Default for EmcyConsumer {
-    fn default() -> Self {
-        Self::new()
-    }
-}
+crate::od::decl::default_is_new!(EmcyConsumer);
 
 /// The COB-ID on which `node` sends its emergencies.
 pub const fn producer_id(node: u8) -> CanId {

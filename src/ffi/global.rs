@@ -198,6 +198,24 @@ pub fn code(r: Result<CopResult, CopKernel>) -> tCopKernel {
     }
 }
 
+/// Runs `f` (a change that cannot fail) on the instance: kCopSuccessful,
+/// or why the instance could not be entered.
+pub fn run(f: impl FnOnce(&mut Instance)) -> tCopKernel {
+    code(with(|i| {
+        f(i);
+        Ok(())
+    }))
+}
+
+/// Runs `f` on the instance at the time of the call (`TgtGetTickCount`),
+/// hands out the events it queued and returns its code.
+pub fn run_at(f: impl FnOnce(&mut Instance, crate::port::Ticks) -> CopResult) -> tCopKernel {
+    let now = TgtClock.now();
+    let r = with(|i| f(i, now));
+    drain();
+    code(r)
+}
+
 /// Hands out the events an API call may have queued (a dictionary write,
 /// an NMT command, a transmission).
 pub fn drain() {

@@ -29,11 +29,10 @@ fn with_tables<R>(f: impl FnOnce(&mut Instance) -> R) -> Result<R, CopKernel> {
 /// kCopSuccessful (kCopIllegalInstance before `CcmInitCANopen`).
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmInitEmcc() -> tCopKernel {
-    code(global::with(|i| {
+    global::run(|i| {
         i.stack.init_emcc();
         i.callbacks.emcc = None;
-        Ok(())
-    }))
+    })
 }
 
 /// `CcmInitEmccEx`: enables the emergency consumer; every valid emergency
@@ -43,11 +42,10 @@ pub extern "C" fn CcmInitEmcc() -> tCopKernel {
 /// kCopSuccessful (kCopIllegalInstance before `CcmInitCANopen`).
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmInitEmccEx(pfnCallback_p: tAppEmccEventCallback) -> tCopKernel {
-    code(global::with(|i| {
+    global::run(|i| {
         i.stack.init_emcc();
         i.callbacks.emcc = pfnCallback_p;
-        Ok(())
-    }))
+    })
 }
 
 /// `CcmEmccDefineProducerTab`: the producers (node-IDs) whose emergencies
@@ -87,21 +85,19 @@ pub unsafe extern "C" fn CcmEmccDefineProducerTab(
 /// `CcmInitNmtm`: enables the NMT master (boot-up detection, guarding).
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmInitNmtm() -> tCopKernel {
-    code(global::with(|i| {
+    global::run(|i| {
         i.stack.nmtm_mut().enable();
-        Ok(())
-    }))
+    })
 }
 
 /// `CcmInitNmtmEx`: as `CcmInitNmtm`, with a callback for boot-up and
 /// guarding events (`kNmtErrCtrlEvBootupReceived`, `kNmtErrCtrlEvLg*`).
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmInitNmtmEx(pfnCallback_p: tAppNmtmEventCallback) -> tCopKernel {
-    code(global::with(|i| {
+    global::run(|i| {
         i.stack.nmtm_mut().enable();
         i.callbacks.nmtm = pfnCallback_p;
-        Ok(())
-    }))
+    })
 }
 
 /// `CcmDefineSlaveTab`: the slaves the master manages; entries 0 are
@@ -200,18 +196,14 @@ pub unsafe extern "C" fn CcmNmtmGetSlaveInfo(
 ) -> tCopKernel {
     // SAFETY: the caller's contract (NULL or a writable tNmtmSlaveInfo).
     let out = c_try!(unsafe { ptr::out(pSlaveInfo_p) });
-    let r = with_tables(|i| i.stack.nmtm_mut().read_slave_info(bNodeId_p));
-    match r {
-        Ok(Ok(info)) => {
-            out.set(tNmtmSlaveInfo {
-                m_bSlaveState: info.flags,
-                m_bLostMsgCount: info.misses,
-                m_bSlaveNodeState: info.state,
-            });
-            0
-        }
-        Ok(Err(e)) | Err(e) => e.code(),
-    }
+    out.give(with_tables(|i| {
+        let info = i.stack.nmtm_mut().read_slave_info(bNodeId_p)?;
+        Ok(tNmtmSlaveInfo {
+            m_bSlaveState: info.flags,
+            m_bLostMsgCount: info.misses,
+            m_bSlaveNodeState: info.state,
+        })
+    }))
 }
 
 /// `CcmInitHbc`: the heartbeat consumer runs from object 0x1016 (always
@@ -225,10 +217,9 @@ pub extern "C" fn CcmInitHbc() -> tCopKernel {
 /// (`kNmtErrCtrlEvHbcConnected`, `...ConnectionLost`, `...NodeStateChanged`).
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmInitHbcEx(fpHbcEventCallback_p: tAppHbcEventCallback) -> tCopKernel {
-    code(global::with(|i| {
+    global::run(|i| {
         i.callbacks.hbc = fpHbcEventCallback_p;
-        Ok(())
-    }))
+    })
 }
 
 /// `CcmHbcDefineProducerTab`: supervises producers by writing their entries
@@ -294,14 +285,12 @@ pub unsafe extern "C" fn CcmHbcGetNodeState(
 ) -> tCopKernel {
     // SAFETY: the caller's contract (NULL or one writable byte).
     let out = c_try!(unsafe { ptr::out(pNodeState_p) });
-    match global::with(|i| i.stack.hbc().node_state(bNodeId_p)) {
-        Ok(Some(s)) => {
-            out.set(s);
-            0
-        }
-        Ok(None) => CopKernel::HbcEntryNotExist.code(),
-        Err(e) => e.code(),
-    }
+    out.give(global::with(|i| {
+        i.stack
+            .hbc()
+            .node_state(bNodeId_p)
+            .ok_or(CopKernel::HbcEntryNotExist)
+    }))
 }
 
 /// `CcmSdocDefineClientTab`: defines SDO client channels. Per entry the
@@ -462,11 +451,5 @@ pub unsafe extern "C" fn SdocGetTransmittedBytes(
 ) -> tCopKernel {
     // SAFETY: the caller's contract (NULL or writable).
     let out = c_try!(unsafe { ptr::out(pdwBytes_p) });
-    match global::with(|i| i.stack.sdoc().transferred(wClientIndex_p)) {
-        Ok(Ok(n)) => {
-            out.set(n);
-            0
-        }
-        Ok(Err(e)) | Err(e) => e.code(),
-    }
+    out.give(global::with(|i| i.stack.sdoc().transferred(wClientIndex_p)))
 }

@@ -13,13 +13,11 @@
 use core::ffi::c_void;
 
 use super::callbacks::{pdo_slot, set_pdo};
-use super::driver::TgtClock;
-use super::global::{self, code, drain};
+use super::global::{self, code};
 use super::ptr::{self, c_try};
-use super::types::{BYTE, DWORD, WORD, tCopKernel};
+use super::types::{BYTE, DWORD, WORD, assert_offsets, tCopKernel};
 use crate::error::CopKernel;
 use crate::pdo::{Direction, PDO_MAX_MAPPENTRIES, PdoParam, StaticPdoParam};
-use crate::port::Clock;
 
 pub use super::types::tPdoCallback;
 
@@ -125,29 +123,35 @@ const PTR: usize = core::mem::size_of::<*const c_void>();
 const fn round_up(n: usize, to: usize) -> usize {
     n.div_ceil(to) * to
 }
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoParam, m_wPdoCommuIndex), 2);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoParam, m_bNodeID), 5);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoParam, m_dwCanId), 8);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoParam, m_bTxTyp), 12);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoParam, m_wInhibitTime), 14);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoParam, m_wEventTime), 16);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoParam, m_bNrOfEntries), 18);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoParam, m_adwMappParam), 20);
+assert_offsets!(tPdoParam {
+    m_wPdoCommuIndex: 2,
+    m_bNodeID: 5,
+    m_dwCanId: 8,
+    m_bTxTyp: 12,
+    m_wInhibitTime: 14,
+    m_wEventTime: 16,
+    m_bNrOfEntries: 18,
+    m_adwMappParam: 20,
+});
 // ARM (ILP32): 56 bytes with 8 entries; LP64 host: 64.
 static_assertions::const_assert_eq!(
     core::mem::size_of::<tPdoParam>(),
     round_up(20 + 4 * PDO_MAX_MAPPENTRIES, PTR) + PTR
 );
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoStaticParam, m_dwCanId), 4);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoStaticParam, m_bTxTyp), 8);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoStaticParam, m_wInhibitTime), 10);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoStaticParam, m_wEventTime), 12);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoStaticParam, m_bSize), 14);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tPdoStaticParam, m_pVarData), 16);
+assert_offsets!(tPdoStaticParam {
+    m_dwCanId: 4,
+    m_bTxTyp: 8,
+    m_wInhibitTime: 10,
+    m_wEventTime: 12,
+    m_bSize: 14,
+    m_pVarData: 16,
+});
 // ARM: 24 bytes; LP64 host: 32.
 static_assertions::const_assert_eq!(core::mem::size_of::<tPdoStaticParam>(), 16 + 2 * PTR);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tMPdoParam, m_bSubindex), 4);
-static_assertions::const_assert_eq!(core::mem::offset_of!(tMPdoParam, m_pData), round_up(5, PTR));
+assert_offsets!(tMPdoParam {
+    m_bSubindex: 4,
+    m_pData: round_up(5, PTR),
+});
 // ARM: 16 bytes; LP64 host: 24.
 static_assertions::const_assert_eq!(
     core::mem::size_of::<tMPdoParam>(),
@@ -218,8 +222,7 @@ pub unsafe extern "C" fn CcmDefinePdoTab(
 ) -> tCopKernel {
     // SAFETY: the caller's contract (wNumOfPdos_p entries; NULL refused).
     let tab = c_try!(unsafe { ptr::slice(pPdoTab_p, usize::from(wNumOfPdos_p)) });
-    let now = TgtClock.now();
-    let r = global::with(|i| {
+    global::run_at(|i, now| {
         for p in tab {
             let param = pdo_param(p)?;
             if p.m_bValidFlag & pdo_valid::CALLBACK != 0 {
@@ -231,9 +234,7 @@ pub unsafe extern "C" fn CcmDefinePdoTab(
             i.stack.define_pdo(&param, now)?;
         }
         Ok(())
-    });
-    drain();
-    code(r)
+    })
 }
 
 /// `CcmDefineStaticPdoTab`: defines PDOs whose data are a byte block of
@@ -264,8 +265,7 @@ pub unsafe extern "C" fn CcmDefineStaticPdoTab(
             return CopKernel::PdoLengthExceeded.code();
         }
     }
-    let now = TgtClock.now();
-    let r = global::with(|i| {
+    global::run_at(|i, now| {
         for p in tab {
             let data = if p.m_bSize == 0 {
                 &[]
@@ -290,9 +290,7 @@ pub unsafe extern "C" fn CcmDefineStaticPdoTab(
             i.stack.define_static_pdo(&param, now)?;
         }
         Ok(())
-    });
-    drain();
-    code(r)
+    })
 }
 
 /// `CcmSignalStaticPdo`: signals that a TPDO's data changed. Types 254/255
@@ -311,10 +309,9 @@ pub extern "C" fn CcmSignalStaticPdo(wCommuIndex_p: WORD) -> tCopKernel {
 /// changed ones. Returns kCopSuccessful.
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmSignalCheckVar() -> tCopKernel {
-    code(global::with(|i| {
+    global::run(|i| {
         i.stack.signal_check_var();
-        Ok(())
-    }))
+    })
 }
 
 /// `CcmSignalVar`: signals every valid TPDO that maps the variable at
@@ -339,10 +336,7 @@ pub extern "C" fn CcmSignalVar(pVar_p: *mut c_void) -> tCopKernel {
 /// driver's code (e.g. kCopCdrvTxBuffLowOverrun).
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmSendPdo(wCommuIndex_p: WORD) -> tCopKernel {
-    let now = TgtClock.now();
-    let r = global::with(|i| i.stack.send_pdo(&mut i.port, wCommuIndex_p, now));
-    drain();
-    code(r)
+    global::run_at(|i, now| i.stack.send_pdo(&mut i.port, wCommuIndex_p, now))
 }
 
 /// `CcmInitSyncConsumer`: (re)reads 0x1005–0x1007. The SYNC consumer is
@@ -365,13 +359,10 @@ pub extern "C" fn CcmConfigSyncConsumer(
     dwSyncId_p: DWORD,
     dwSyncWindowLength_p: DWORD,
 ) -> tCopKernel {
-    let now = TgtClock.now();
-    let r = global::with(|i| {
+    global::run_at(|i, now| {
         i.stack
             .config_sync_consumer(dwSyncId_p, dwSyncWindowLength_p, now)
-    });
-    drain();
-    code(r)
+    })
 }
 
 /// `CcmEnterCriticalSectionPdoProcess`: until the matching leave,

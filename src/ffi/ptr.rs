@@ -12,7 +12,7 @@ use core::ffi::c_void;
 use core::ptr::NonNull;
 use core::sync::atomic::AtomicU8;
 
-use crate::error::CopKernel;
+use crate::error::{CopKernel, CopResult};
 use crate::od::ObdEntry;
 
 /// Evaluates a `Result<T, CopKernel>`; on `Err` returns its `tCopKernel`
@@ -61,6 +61,20 @@ impl<T: Copy> Out<T> {
     pub(crate) fn set(self, v: T) {
         // SAFETY: as in `get`.
         unsafe { self.0.as_ptr().write(v) }
+    }
+
+    /// The code of a call that gives a value: on success the value is
+    /// stored here and kCopSuccessful returned; otherwise the call's code,
+    /// with nothing stored.
+    #[inline]
+    pub(crate) fn give(self, r: Result<CopResult<T>, CopKernel>) -> u32 {
+        match r {
+            Ok(Ok(v)) => {
+                self.set(v);
+                CopKernel::Successful.code()
+            }
+            Ok(Err(e)) | Err(e) => e.code(),
+        }
     }
 }
 

@@ -9,12 +9,10 @@
 //! inside an OBD callback.
 
 use super::MAX_INSTANCES;
-use super::driver::TgtClock;
-use super::global::{self, Instance, code, drain};
+use super::global::{self, Instance, code};
 use super::ptr::{self, c_try};
 use super::types::*;
 use crate::error::{CopKernel, CopResult};
-use crate::port::Clock;
 use crate::store::image::NvFault;
 use crate::store::{Driver, StorageDriver};
 use crate::wire::time::TimeOfDay;
@@ -39,10 +37,9 @@ pub extern "C" fn CcmClearPreDefinedErrorField() -> tCopKernel {
 #[cfg(nmts_use_lifeguarding)]
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmInitLgs() -> tCopKernel {
-    code(global::with(|i| {
+    global::run(|i| {
         i.stack.init_lgs();
-        Ok(())
-    }))
+    })
 }
 
 /// `CcmConfigLgs` (only with `NMTS_USE_LIFEGUARDING`): guard time in ms and
@@ -55,13 +52,10 @@ pub extern "C" fn CcmInitLgs() -> tCopKernel {
 #[cfg(nmts_use_lifeguarding)]
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmConfigLgs(wLifeGuardTime_p: WORD, bLifeGuardFactor_p: BYTE) -> tCopKernel {
-    let now = TgtClock.now();
-    let r = global::with(|i| {
+    global::run_at(|i, now| {
         i.stack
             .config_lgs(wLifeGuardTime_p, bLifeGuardFactor_p, now)
-    });
-    drain();
-    code(r)
+    })
 }
 
 /// `CcmConfigSyncProducer`: with bit 30 (`CANID_SYNC_PRODUCER`) set in
@@ -76,13 +70,10 @@ pub extern "C" fn CcmConfigLgs(wLifeGuardTime_p: WORD, bLifeGuardFactor_p: BYTE)
 /// identifier (nothing changes); or the code of a refused object write.
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmConfigSyncProducer(dwSyncId_p: DWORD, dwSyncCycleTime_p: DWORD) -> tCopKernel {
-    let now = TgtClock.now();
-    let r = global::with(|i| {
+    global::run_at(|i, now| {
         i.stack
             .config_sync_producer(dwSyncId_p, dwSyncCycleTime_p, now)
-    });
-    drain();
-    code(r)
+    })
 }
 
 /// `CcmTspSend`: sends one TIME frame (CiA 301: 6 bytes, milliseconds

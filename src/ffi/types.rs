@@ -9,6 +9,15 @@
 
 use core::ffi::c_void;
 
+/// Compile-time checks of a C structure's field offsets against the
+/// layout of the SYS TEC header (`assert_offsets!(tFoo { m_bField: 4 })`).
+macro_rules! assert_offsets {
+    ($t:ty { $($field:ident: $offset:expr),+ $(,)? }) => {
+        $(static_assertions::const_assert_eq!(core::mem::offset_of!($t, $field), $offset);)+
+    };
+}
+pub(crate) use assert_offsets;
+
 /// `BYTE`.
 pub type BYTE = u8;
 /// `QWORD` (64 bits).

@@ -33,11 +33,7 @@ pub struct HeartbeatConsumer {
     entries: [Entry; CAPACITY],
 }
 
-impl Default for HeartbeatConsumer {
-    fn default() -> Self {
-        Self::new()
-    }
-}
+crate::od::decl::default_is_new!(HeartbeatConsumer);
 
 impl HeartbeatConsumer {
     /// A consumer without entries.

@@ -120,12 +120,8 @@ impl LifeGuardSlave {
     /// supervision continues; the new life time applies from the next
     /// request. Life time 0 ends it.
     pub fn reconfigure(&mut self, od: &ObjectDictionary) {
-        self.guard_ms = od
-            .read_uint(GUARD_TIME_INDEX, 0)
-            .map_or(self.own_guard_ms, |v| v as u16);
-        self.factor = od
-            .read_uint(LIFE_TIME_FACTOR_INDEX, 0)
-            .map_or(self.own_factor, |v| v as u8);
+        self.guard_ms = od.read_or(GUARD_TIME_INDEX, 0, self.own_guard_ms);
+        self.factor = od.read_or(LIFE_TIME_FACTOR_INDEX, 0, self.own_factor);
         if self.life_time_ticks() == 0 {
             self.supervision = Supervision::Waiting;
         }

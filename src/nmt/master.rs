@@ -26,6 +26,16 @@ struct Slave {
     last_toggle: bool,
 }
 
+impl Slave {
+    /// No guard request outstanding and none missed (an answer arrived, or
+    /// guarding starts anew).
+    fn answered_in_time(&mut self) {
+        self.awaiting = false;
+        self.misses = 0;
+        self.no_answer_reported = false;
+    }
+}
+
 /// What the master knows about a slave (`CcmNmtmGetSlaveInfo`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct SlaveInfo {
@@ -67,11 +77,7 @@ pub struct NmtMaster {
     slaves: [Slave; CAPACITY],
 }
 
-impl Default for NmtMaster {
-    fn default() -> Self {
-        Self::new()
-    }
-}
+crate::od::decl::default_is_new!(NmtMaster);
 
 fn valid_node(node: u8) -> CopResult {
     if (1..=127).contains(&node) {
@@ -174,12 +180,10 @@ impl NmtMaster {
         s.guard_ms = guard_ms;
         s.life_factor = life_factor.max(1);
         s.next_guard = now;
-        s.awaiting = false;
-        s.misses = 0;
         // The toggle bit is not reset here: the slave resets it only with
         // reset communication (CiA 301 7.2.8.3.2.1), which the master sees
         // as the slave's boot-up message.
-        s.no_answer_reported = false;
+        s.answered_in_time();
         s.answered = false;
         s.updated = false;
         Ok(())
@@ -255,9 +259,7 @@ impl NmtMaster {
             .iter_mut()
             .find(|s| s.node == ec.node && s.awaiting)
         {
-            s.awaiting = false;
-            s.misses = 0;
-            s.no_answer_reported = false;
+            s.answered_in_time();
             let toggle = raw & 0x80 != 0;
             s.answered = true;
             s.updated = true;

@@ -11,44 +11,29 @@
 use crate::event::{ActionQueue, Event, Internal, NmtEvent, NmtState};
 use crate::wire::nmt::NmtCs;
 
-/// Local NMT commands (`tNmtCommand`, `CcmNmtsExecCommand`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[repr(u16)]
-pub enum NmtCommand {
-    /// kNmtCommInitialize.
-    Initialize = 0x0000,
-    /// kNmtCommStartRemoteNode / kNmtCommEnterOperational.
-    StartRemoteNode = 0x0001,
-    /// kNmtCommStopRemoteNode / kNmtCommEnterStopped.
-    StopRemoteNode = 0x0002,
-    /// kNmtCommEnterPreOperational.
-    EnterPreOperational = 0x0080,
-    /// kNmtCommResetNode.
-    ResetNode = 0x0081,
-    /// kNmtCommResetCommunication.
-    ResetCommunication = 0x0082,
-    /// kNmtCommInitBeforePost.
-    InitBeforePost = 0x0101,
-    /// kNmtCommEnterPostPreOperational.
-    EnterPostPreOperational = 0x0180,
+c_enum! {
+    /// Local NMT commands (`tNmtCommand`, `CcmNmtsExecCommand`).
+    pub enum NmtCommand: u16, fn from_u16(u16) {
+        /// kNmtCommInitialize.
+        Initialize = 0x0000,
+        /// kNmtCommStartRemoteNode / kNmtCommEnterOperational.
+        StartRemoteNode = 0x0001,
+        /// kNmtCommStopRemoteNode / kNmtCommEnterStopped.
+        StopRemoteNode = 0x0002,
+        /// kNmtCommEnterPreOperational.
+        EnterPreOperational = 0x0080,
+        /// kNmtCommResetNode.
+        ResetNode = 0x0081,
+        /// kNmtCommResetCommunication.
+        ResetCommunication = 0x0082,
+        /// kNmtCommInitBeforePost.
+        InitBeforePost = 0x0101,
+        /// kNmtCommEnterPostPreOperational.
+        EnterPostPreOperational = 0x0180,
+    }
 }
 
 impl NmtCommand {
-    /// Decodes a `tNmtCommand` value.
-    pub const fn from_u16(v: u16) -> Option<NmtCommand> {
-        Some(match v {
-            0x0000 => NmtCommand::Initialize,
-            0x0001 => NmtCommand::StartRemoteNode,
-            0x0002 => NmtCommand::StopRemoteNode,
-            0x0080 => NmtCommand::EnterPreOperational,
-            0x0081 => NmtCommand::ResetNode,
-            0x0082 => NmtCommand::ResetCommunication,
-            0x0101 => NmtCommand::InitBeforePost,
-            0x0180 => NmtCommand::EnterPostPreOperational,
-            _ => return None,
-        })
-    }
-
     /// The NMT command specifier the local command stands for; `None` for
     /// the two steps of the start-up sequence (kNmtCommInitialize,
     /// kNmtCommInitBeforePost), which the stack runs itself.

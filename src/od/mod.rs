@@ -30,7 +30,7 @@ pub use table::{CbArg, ObdCallback, ObdEntry, ObdSize, ObdSubEntry, ObdVarEntry,
 use core::sync::atomic::AtomicU8;
 use core::sync::atomic::Ordering::Relaxed;
 
-use crate::error::{CopKernel, OdError, SdoAbort};
+use crate::error::{CopKernel, OdError, OdResult, SdoAbort};
 
 /// Byte order of data crossing the dictionary boundary.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -127,13 +127,13 @@ impl Object {
         self.desc
     }
     /// Where the value lives.
-    pub fn storage(&self) -> Result<Storage, OdError> {
+    pub fn storage(&self) -> OdResult<Storage> {
         self.desc
             .storage(usize::from(self.element))
             .ok_or(OdError::NO_VAR)
     }
     /// Width of the variable in memory (capacity for strings/domains).
-    pub fn native_size(&self) -> Result<usize, OdError> {
+    pub fn native_size(&self) -> OdResult<usize> {
         Ok(match self.storage()? {
             Storage::Ram(m) => m.len(),
             Storage::Rom(r) => r.len(),
@@ -175,7 +175,7 @@ impl Entry {
 
     /// Looks up a subindex of this entry (as [`ObjectDictionary::find`]).
     #[inline]
-    pub fn find(&self, sub: u8) -> Result<Object, OdError> {
+    pub fn find(&self, sub: u8) -> OdResult<Object> {
         find_in_entry(self.entry, sub)
     }
 
@@ -206,7 +206,7 @@ impl Entry {
     /// checks or callbacks, as [`ObjectDictionary::read_uint`] does: the
     /// value's wire bytes (little-endian) read as a number.
     #[inline]
-    pub fn read_uint(&self, sub: u8) -> Result<u64, OdError> {
+    pub fn read_uint(&self, sub: u8) -> OdResult<u64> {
         // The common case, a number in a plain RAM variable of exactly its
         // wire size at its usual position, directly: the value's bytes are
         // the wire bytes (little-endian).
@@ -221,7 +221,7 @@ impl Entry {
     /// [`ObjectDictionary::peek`] with [`ByteOrder::Wire`] does; returns the
     /// number of bytes. Bytes of `out` beyond them are not touched.
     #[inline]
-    pub fn read_wire(&self, sub: u8, out: &mut [u8; MAX_FIXED]) -> Result<usize, OdError> {
+    pub fn read_wire(&self, sub: u8, out: &mut [u8; MAX_FIXED]) -> OdResult<usize> {
         if let Some(n) = self.plain_number(sub).and_then(|m| load_wire(m, out)) {
             return Ok(n);
         }
@@ -230,13 +230,13 @@ impl Entry {
 
     /// [`Entry::read_wire`] for every other object.
     #[inline(never)]
-    fn read_wire_general(&self, sub: u8, out: &mut [u8; MAX_FIXED]) -> Result<usize, OdError> {
+    fn read_wire_general(&self, sub: u8, out: &mut [u8; MAX_FIXED]) -> OdResult<usize> {
         peek_object(&self.find(sub)?, ByteOrder::Wire, out)
     }
 
     /// [`Entry::read_uint`] for every other object.
     #[inline(never)]
-    fn read_uint_general(&self, sub: u8) -> Result<u64, OdError> {
+    fn read_uint_general(&self, sub: u8) -> OdResult<u64> {
         read_uint_of(&self.find(sub)?)
     }
 }
@@ -244,7 +244,7 @@ impl Entry {
 /// The value of a fixed-size object as an unsigned integer: its wire bytes
 /// (little-endian) read as a number, as [`ObjectDictionary::peek`] with
 /// [`ByteOrder::Wire`] gives them.
-fn read_uint_of(obj: &Object) -> Result<u64, OdError> {
+fn read_uint_of(obj: &Object) -> OdResult<u64> {
     let mut buf = [0u8; MAX_FIXED];
     let n = peek_object(obj, ByteOrder::Wire, &mut buf)?;
     Ok(value::le_to_u64(buf.get(..n).unwrap_or(&[])))
@@ -325,7 +325,7 @@ fn load_wire(m: &[AtomicU8], out: &mut [u8; MAX_FIXED]) -> Option<usize> {
 
 /// Subindex `sub` of `entry` ([`Entry::find`]).
 #[inline(always)]
-fn find_in_entry(entry: &'static ObdEntry, sub: u8) -> Result<Object, OdError> {
+fn find_in_entry(entry: &'static ObdEntry, sub: u8) -> OdResult<Object> {
     // The usual layout: subindex n at position n (an entry without table
     // takes the general path, which refuses it).
     let at_n = if entry.m_pSubIndex.is_null() {
@@ -348,7 +348,7 @@ fn object(
     desc: &'static ObdSubEntry,
     sub: u8,
     element: u8,
-) -> Result<Object, OdError> {
+) -> OdResult<Object> {
     match TYPE_OF_CODE.get(usize::from(desc.m_bType)) {
         Some(Some(typ)) => Ok(Object {
             entry,
@@ -378,7 +378,7 @@ const TYPE_OF_CODE: [Option<DataType>; 256] = {
 /// table: searched among the subindices, else an element of a trailing
 /// array.
 #[inline(never)]
-fn find_sub(entry: &'static ObdEntry, sub: u8) -> Result<Object, OdError> {
+fn find_sub(entry: &'static ObdEntry, sub: u8) -> OdResult<Object> {
     let subs = entry.subs();
     let (desc, element) = match subs.binary_search_by_key(&sub, |s| s.sub()) {
         Ok(i) => (subs.get(i).ok_or(OdError::SUBINDEX)?, 0u8),
@@ -428,8 +428,7 @@ impl Staged {
 pub trait WriteHooks {
     /// Called after length and range checks, before the application's
     /// kObdEvPreWrite callback. `Err` refuses the write; nothing changes.
-    fn check(&mut self, od: &ObjectDictionary, obj: &Object, value: &Staged)
-    -> Result<(), OdError>;
+    fn check(&mut self, od: &ObjectDictionary, obj: &Object, value: &Staged) -> OdResult;
     /// Called immediately before the value is stored (the write can no
     /// longer fail): for example, invalidate 0x13FE.
     fn before_store(&mut self, od: &ObjectDictionary, obj: &Object, value: &Staged);
@@ -441,12 +440,31 @@ pub trait WriteHooks {
 pub struct NoHooks;
 
 impl WriteHooks for NoHooks {
-    fn check(&mut self, _: &ObjectDictionary, _: &Object, _: &Staged) -> Result<(), OdError> {
+    fn check(&mut self, _: &ObjectDictionary, _: &Object, _: &Staged) -> OdResult {
         Ok(())
     }
     fn before_store(&mut self, _: &ObjectDictionary, _: &Object, _: &Staged) {}
     fn after_store(&mut self, _: &ObjectDictionary, _: &Object) {}
 }
+
+/// An unsigned integer type a value is read as
+/// ([`ObjectDictionary::read_or`]).
+pub trait UintValue: Copy {
+    /// The low bits of `v` (what `v as Self` keeps).
+    fn truncate(v: u64) -> Self;
+}
+
+macro_rules! uint_value {
+    ($($t:ty),+) => {
+        $(impl UintValue for $t {
+            #[inline]
+            fn truncate(v: u64) -> Self {
+                v as $t
+            }
+        })+
+    };
+}
+uint_value!(u8, u16, u32, u64);
 
 /// The object dictionary.
 #[derive(Clone, Copy, Debug)]
@@ -794,13 +812,13 @@ impl ObjectDictionary {
     /// without searching the index again (several subindices of one
     /// object, e.g. an SRDO's parameters for its CRC).
     #[inline]
-    pub fn entry(&self, index: u16) -> Result<Entry, OdError> {
+    pub fn entry(&self, index: u16) -> OdResult<Entry> {
         self.find_entry(index).map(Entry::new).ok_or(OdError::INDEX)
     }
 
     /// Looks up index and subindex.
     #[inline(never)]
-    pub fn find(&self, index: u16, sub: u8) -> Result<Object, OdError> {
+    pub fn find(&self, index: u16, sub: u8) -> OdResult<Object> {
         match self.find_entry_fast(index) {
             Some(entry) => find_in_entry(entry, sub),
             None => self.find_slow(index, sub),
@@ -809,7 +827,7 @@ impl ObjectDictionary {
 
     /// [`ObjectDictionary::find`] without the fast path of the index search.
     #[inline(never)]
-    fn find_slow(&self, index: u16, sub: u8) -> Result<Object, OdError> {
+    fn find_slow(&self, index: u16, sub: u8) -> OdResult<Object> {
         match self.find_entry_slow(index) {
             Some(entry) => find_in_entry(entry, sub),
             None => Err(OdError::INDEX),
@@ -829,7 +847,7 @@ impl ObjectDictionary {
     }
 
     /// Current size of a value in `order` (strings: their length).
-    pub fn size_of(&self, obj: &Object, order: ByteOrder) -> Result<usize, OdError> {
+    pub fn size_of(&self, obj: &Object, order: ByteOrder) -> OdResult<usize> {
         let native = obj.native_size()?;
         Ok(match (order, obj.typ.wire_size()) {
             (ByteOrder::Wire, Some(w)) => w,
@@ -842,25 +860,27 @@ impl ObjectDictionary {
 
     /// Reads a value without access checks or callbacks (stack-internal use:
     /// CRC, mapping, diagnostics). Returns the number of bytes written.
-    pub fn peek(&self, obj: &Object, order: ByteOrder, out: &mut [u8]) -> Result<usize, OdError> {
+    pub fn peek(&self, obj: &Object, order: ByteOrder, out: &mut [u8]) -> OdResult<usize> {
         peek_object(obj, order, out)
     }
 
     /// Reads a numeric value as an unsigned integer (stack-internal).
-    pub fn read_uint(&self, index: u16, sub: u8) -> Result<u64, OdError> {
+    pub fn read_uint(&self, index: u16, sub: u8) -> OdResult<u64> {
         self.entry(index)?.read_uint(sub)
+    }
+
+    /// [`ObjectDictionary::read_uint`] as a `T` (its low bits), or
+    /// `default` where the object does not exist or cannot be read: the
+    /// read of a configuration value that the stack keeps itself on a
+    /// dictionary without the object.
+    pub fn read_or<T: UintValue>(&self, index: u16, sub: u8, default: T) -> T {
+        self.read_uint(index, sub).map_or(default, T::truncate)
     }
 
     /// Reads an object for an application or SDO client: existence and
     /// read access are checked and the entry's callback sees
     /// kObdEvCheckExist, kObdEvPreRead and kObdEvPostRead.
-    pub fn read(
-        &self,
-        index: u16,
-        sub: u8,
-        order: ByteOrder,
-        out: &mut [u8],
-    ) -> Result<usize, OdError> {
+    pub fn read(&self, index: u16, sub: u8, order: ByteOrder, out: &mut [u8]) -> OdResult<usize> {
         let obj = self.locate(index, sub)?;
         if !obj.access().readable() {
             return Err(OdError::READ);
@@ -886,7 +906,7 @@ impl ObjectDictionary {
     }
 
     /// Finds an object and asks its callback whether it exists.
-    pub fn locate(&self, index: u16, sub: u8) -> Result<Object, OdError> {
+    pub fn locate(&self, index: u16, sub: u8) -> OdResult<Object> {
         let obj = self.find(index, sub)?;
         obj.entry
             .notify(event::CHECK_EXIST, sub, CbArg::None)
@@ -897,7 +917,7 @@ impl ObjectDictionary {
     /// Checks that a write of `size` bytes can start (SDO initiate): object
     /// exists, is writable and the size fits; the callback sees
     /// kObdEvInitWrite.
-    pub fn begin_write(&self, index: u16, sub: u8, size: Option<usize>) -> Result<Object, OdError> {
+    pub fn begin_write(&self, index: u16, sub: u8, size: Option<usize>) -> OdResult<Object> {
         let obj = self.locate(index, sub)?;
         if !obj.access().writable() {
             return Err(OdError::WRITE);
@@ -910,7 +930,7 @@ impl ObjectDictionary {
         Ok(obj)
     }
 
-    fn check_length(&self, obj: &Object, order: ByteOrder, n: usize) -> Result<(), OdError> {
+    fn check_length(&self, obj: &Object, order: ByteOrder, n: usize) -> OdResult {
         let exact = match order {
             ByteOrder::Wire => obj.typ.wire_size(),
             ByteOrder::Native => obj.typ.wire_size().map(|_| obj.native_size().unwrap_or(0)),
@@ -930,7 +950,7 @@ impl ObjectDictionary {
     }
 
     /// Checks and converts a value for `obj` without storing it.
-    pub fn stage(&self, obj: &Object, order: ByteOrder, data: &[u8]) -> Result<Staged, OdError> {
+    pub fn stage(&self, obj: &Object, order: ByteOrder, data: &[u8]) -> OdResult<Staged> {
         self.check_length(obj, order, data.len())?;
         let mut staged = Staged {
             native: [0; MAX_FIXED],
@@ -977,7 +997,7 @@ impl ObjectDictionary {
         order: ByteOrder,
         data: &[u8],
         hooks: &mut impl WriteHooks,
-    ) -> Result<(), OdError> {
+    ) -> OdResult {
         let obj = self.begin_write(index, sub, None)?;
         if obj.typ.wire_size().is_none() {
             // Strings and domains: the callback may resize or move the
@@ -1002,12 +1022,7 @@ impl ObjectDictionary {
         Ok(())
     }
 
-    fn pre_write_callback(
-        &self,
-        obj: &Object,
-        staged: &Staged,
-        data: &[u8],
-    ) -> Result<(), OdError> {
+    fn pre_write_callback(&self, obj: &Object, staged: &Staged, data: &[u8]) -> OdResult {
         if !obj.entry.has_callback() {
             return Ok(());
         }
@@ -1047,7 +1062,7 @@ impl ObjectDictionary {
         let _ = self.callback(obj, event::POST_WRITE, CbArg::None);
     }
 
-    fn callback(&self, obj: &Object, ev: u8, arg: CbArg<'_>) -> Result<(), OdError> {
+    fn callback(&self, obj: &Object, ev: u8, arg: CbArg<'_>) -> OdResult {
         obj.entry
             .notify(ev, obj.sub, arg)
             .map_err(|(abort, ret)| OdError {
@@ -1057,7 +1072,7 @@ impl ObjectDictionary {
     }
 
     /// Stores a staged value (no checks, no callbacks).
-    pub fn store(&self, obj: &Object, staged: &Staged, data: &[u8]) -> Result<(), OdError> {
+    pub fn store(&self, obj: &Object, staged: &Staged, data: &[u8]) -> OdResult {
         match obj.storage()? {
             Storage::Ram(m) if staged.fixed => value::store(m, staged.native()),
             Storage::Ram(m) => {
@@ -1098,7 +1113,7 @@ impl ObjectDictionary {
 
     /// Writes a value bypassing access rights and callbacks (the stack's
     /// own bookkeeping, e.g. 0x13FE = 0 or 0x1001). Fixed-size types only.
-    pub fn poke_uint(&self, index: u16, sub: u8, v: u64) -> Result<(), OdError> {
+    pub fn poke_uint(&self, index: u16, sub: u8, v: u64) -> OdResult {
         let obj = self.find(index, sub)?;
         let wire = obj.typ.wire_size().ok_or(OdError::LENGTH)?;
         let bytes = v.to_le_bytes();
@@ -1106,7 +1121,7 @@ impl ObjectDictionary {
         self.store(&obj, &staged, &[])
     }
 
-    fn stage_unchecked(&self, obj: &Object, wire: &[u8]) -> Result<Staged, OdError> {
+    fn stage_unchecked(&self, obj: &Object, wire: &[u8]) -> OdResult<Staged> {
         let size = obj.native_size()?;
         let mut staged = Staged {
             native: [0; MAX_FIXED],
@@ -1144,7 +1159,7 @@ impl ObjectDictionary {
 }
 
 /// [`ObjectDictionary::peek`].
-fn peek_object(obj: &Object, order: ByteOrder, out: &mut [u8]) -> Result<usize, OdError> {
+fn peek_object(obj: &Object, order: ByteOrder, out: &mut [u8]) -> OdResult<usize> {
     let mut tmp = [0u8; MAX_FIXED];
     let fixed = obj.typ.wire_size().is_some();
     match obj.storage()? {
@@ -1180,12 +1195,7 @@ fn peek_object(obj: &Object, order: ByteOrder, out: &mut [u8]) -> Result<usize, 
     }
 }
 
-fn finish_read(
-    obj: &Object,
-    order: ByteOrder,
-    native: &[u8],
-    out: &mut [u8],
-) -> Result<usize, OdError> {
+fn finish_read(obj: &Object, order: ByteOrder, native: &[u8], out: &mut [u8]) -> OdResult<usize> {
     match order {
         ByteOrder::Wire => value::native_to_wire(obj.typ, native, out),
         ByteOrder::Native => {

@@ -198,6 +198,14 @@ pub enum CbArg<'a> {
     StringDomain(&'a mut ObdVStringDomain),
 }
 
+/// The table's pointer to an optional default value (NULL for none).
+const fn default_ptr(default: Option<&'static [u8]>) -> *const c_void {
+    match default {
+        Some(d) => d.as_ptr() as *const c_void,
+        None => core::ptr::null(),
+    }
+}
+
 impl ObdSubEntry {
     /// A RAM variable owned by Rust code.
     pub const fn ram(
@@ -213,12 +221,21 @@ impl ObdSubEntry {
             m_bAccess: access.0,
             m_bKind: kind::RAM,
             m_dwSize: current.len() as u32,
-            m_pDefault: match default {
-                Some(d) => d.as_ptr() as *const c_void,
-                None => core::ptr::null(),
-            },
+            m_pDefault: default_ptr(default),
             m_pCurrent: current.as_ptr() as *mut c_void,
         }
+    }
+
+    /// A communication parameter's variable (`SRW`, the form objdef.h's
+    /// PDO and SRDO parameter macros give every variable subindex), with
+    /// its default.
+    pub const fn param(
+        sub: u8,
+        typ: DataType,
+        current: &'static [AtomicU8],
+        default: &'static [u8],
+    ) -> ObdSubEntry {
+        Self::ram(sub, typ, Access::SRW, current, Some(default))
     }
 
     /// A RAM variable with a value range: `limits` holds default, low and
@@ -267,11 +284,23 @@ impl ObdSubEntry {
 
     /// A constant.
     pub const fn rom(sub: u8, typ: DataType, access: Access, value: &'static [u8]) -> ObdSubEntry {
+        Self::constant(sub, typ, kind::ROM, access, value)
+    }
+
+    /// A constant of `kind` ([`kind::ROM`], [`kind::ROM_VSTRING`]): never
+    /// writable, `value` is the whole object.
+    const fn constant(
+        sub: u8,
+        typ: DataType,
+        kind: u8,
+        access: Access,
+        value: &'static [u8],
+    ) -> ObdSubEntry {
         ObdSubEntry {
             m_bSubIndex: sub,
             m_bType: typ.code(),
             m_bAccess: (access.0 & !Access::WRITE) | Access::CONST,
-            m_bKind: kind::ROM,
+            m_bKind: kind,
             m_dwSize: value.len() as u32,
             m_pDefault: value.as_ptr() as *const c_void,
             m_pCurrent: core::ptr::null_mut(),
@@ -300,15 +329,7 @@ impl ObdSubEntry {
 
     /// A constant visible string.
     pub const fn rom_string(sub: u8, access: Access, value: &'static [u8]) -> ObdSubEntry {
-        ObdSubEntry {
-            m_bSubIndex: sub,
-            m_bType: DataType::VString.code(),
-            m_bAccess: (access.0 & !Access::WRITE) | Access::CONST,
-            m_bKind: kind::ROM_VSTRING,
-            m_dwSize: value.len() as u32,
-            m_pDefault: value.as_ptr() as *const c_void,
-            m_pCurrent: core::ptr::null_mut(),
-        }
+        Self::constant(sub, DataType::VString, kind::ROM_VSTRING, access, value)
     }
 
     /// An application-attached variable (USERDEF / DOMAIN).
@@ -326,10 +347,7 @@ impl ObdSubEntry {
             m_bAccess: access.0 | Access::VAR,
             m_bKind: kind::VAR_ENTRY,
             m_dwSize: size,
-            m_pDefault: match default {
-                Some(d) => d.as_ptr() as *const c_void,
-                None => core::ptr::null(),
-            },
+            m_pDefault: default_ptr(default),
             m_pCurrent: entry as *const ObdVarEntry as *mut c_void,
         }
     }
@@ -376,6 +394,18 @@ impl ObdSubEntry {
         })
     }
 
+    /// The constant data of a ROM entry or ROM string ([`kind::ROM`],
+    /// [`kind::ROM_VSTRING`]): `m_dwSize` bytes at `m_pDefault`.
+    #[inline]
+    fn rom_bytes(&self) -> Option<&'static [u8]> {
+        if self.m_pDefault.is_null() {
+            return None;
+        }
+        // SAFETY: constant entries and constant strings point to m_dwSize
+        // bytes of static constant data.
+        Some(unsafe { core::slice::from_raw_parts(self.m_pDefault as *const u8, self.size()) })
+    }
+
     /// Storage of element `element` (0 for plain subindices; arrays use the
     /// element number 0..n-1 with elements laid out one after the other).
     pub fn storage(&self, element: usize) -> Option<Storage> {
@@ -384,16 +414,7 @@ impl ObdSubEntry {
         element.checked_mul(size)?;
         match self.m_bKind {
             kind::RAM => self.ram_var(element).map(Storage::Ram),
-            kind::ROM => {
-                if self.m_pDefault.is_null() {
-                    return None;
-                }
-                // SAFETY: constant entries point to m_dwSize bytes of static
-                // constant data.
-                Some(Storage::Rom(unsafe {
-                    core::slice::from_raw_parts(self.m_pDefault as *const u8, size)
-                }))
-            }
+            kind::ROM => self.rom_bytes().map(Storage::Rom),
             kind::RAM_VSTRING => {
                 if self.m_pCurrent.is_null() {
                     return None;
@@ -403,15 +424,7 @@ impl ObdSubEntry {
                     core::slice::from_raw_parts(self.m_pCurrent as *const AtomicU8, size + 1)
                 }))
             }
-            kind::ROM_VSTRING => {
-                if self.m_pDefault.is_null() {
-                    return None;
-                }
-                // SAFETY: constant strings are m_dwSize bytes of static data.
-                Some(Storage::RomString(unsafe {
-                    core::slice::from_raw_parts(self.m_pDefault as *const u8, size)
-                }))
-            }
+            kind::ROM_VSTRING => self.rom_bytes().map(Storage::RomString),
             kind::VAR_ENTRY => {
                 if self.m_pCurrent.is_null() {
                     return None;
@@ -643,11 +656,7 @@ impl ObdVarEntry {
     }
 }
 
-impl Default for ObdVarEntry {
-    fn default() -> Self {
-        Self::new()
-    }
-}
+super::decl::default_is_new!(ObdVarEntry);
 
 // ---------------------------------------------------------------------
 // The pool of the dynamic OD

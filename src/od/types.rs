@@ -2,36 +2,36 @@
 //! (`tObdAccess`). The numbers are part of the source contract: ODBuilder
 //! writes them as bare literals into objdict.h.
 
-/// Data type of an object (`kObdTyp*`).
-#[allow(missing_docs)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[repr(u8)]
-pub enum DataType {
-    Bool = 0x01,
-    Int8 = 0x02,
-    Int16 = 0x03,
-    Int32 = 0x04,
-    UInt8 = 0x05,
-    UInt16 = 0x06,
-    UInt32 = 0x07,
-    Real32 = 0x08,
-    VString = 0x09,
-    OString = 0x0A,
-    UString = 0x0B,
-    TimeOfDay = 0x0C,
-    TimeDiff = 0x0D,
-    Domain = 0x0F,
-    Int24 = 0x10,
-    Real64 = 0x11,
-    Int40 = 0x12,
-    Int48 = 0x13,
-    Int56 = 0x14,
-    Int64 = 0x15,
-    UInt24 = 0x16,
-    UInt40 = 0x18,
-    UInt48 = 0x19,
-    UInt56 = 0x1A,
-    UInt64 = 0x1B,
+c_enum! {
+    /// Data type of an object (`kObdTyp*`).
+    #[allow(missing_docs)]
+    pub enum DataType: u8, fn from_code(u16) {
+        Bool = 0x01,
+        Int8 = 0x02,
+        Int16 = 0x03,
+        Int32 = 0x04,
+        UInt8 = 0x05,
+        UInt16 = 0x06,
+        UInt32 = 0x07,
+        Real32 = 0x08,
+        VString = 0x09,
+        OString = 0x0A,
+        UString = 0x0B,
+        TimeOfDay = 0x0C,
+        TimeDiff = 0x0D,
+        Domain = 0x0F,
+        Int24 = 0x10,
+        Real64 = 0x11,
+        Int40 = 0x12,
+        Int48 = 0x13,
+        Int56 = 0x14,
+        Int64 = 0x15,
+        UInt24 = 0x16,
+        UInt40 = 0x18,
+        UInt48 = 0x19,
+        UInt56 = 0x1A,
+        UInt64 = 0x1B,
+    }
 }
 
 /// How the bytes of a type are converted between the variable in memory
@@ -54,112 +54,35 @@ pub enum Encoding {
 }
 
 impl DataType {
-    /// Looks up a `kObdTyp*` value.
-    pub const fn from_code(code: u16) -> Option<DataType> {
-        use DataType::*;
-        Some(match code {
-            0x01 => Bool,
-            0x02 => Int8,
-            0x03 => Int16,
-            0x04 => Int32,
-            0x05 => UInt8,
-            0x06 => UInt16,
-            0x07 => UInt32,
-            0x08 => Real32,
-            0x09 => VString,
-            0x0A => OString,
-            0x0B => UString,
-            0x0C => TimeOfDay,
-            0x0D => TimeDiff,
-            0x0F => Domain,
-            0x10 => Int24,
-            0x11 => Real64,
-            0x12 => Int40,
-            0x13 => Int48,
-            0x14 => Int56,
-            0x15 => Int64,
-            0x16 => UInt24,
-            0x18 => UInt40,
-            0x19 => UInt48,
-            0x1A => UInt56,
-            0x1B => UInt64,
-            _ => return None,
-        })
-    }
-
-    /// The `kObdTyp*` value.
-    pub const fn code(self) -> u8 {
-        self as u8
-    }
-
     /// Byte conversion rule for this type.
     pub const fn encoding(self) -> Encoding {
         use DataType::*;
+        const fn signed(wire: usize) -> Encoding {
+            Encoding::Numeric { wire, signed: true }
+        }
+        const fn unsigned(wire: usize) -> Encoding {
+            Encoding::Numeric {
+                wire,
+                signed: false,
+            }
+        }
         match self {
-            Bool | UInt8 => Encoding::Numeric {
-                wire: 1,
-                signed: false,
-            },
-            Int8 => Encoding::Numeric {
-                wire: 1,
-                signed: true,
-            },
-            Int16 => Encoding::Numeric {
-                wire: 2,
-                signed: true,
-            },
-            UInt16 => Encoding::Numeric {
-                wire: 2,
-                signed: false,
-            },
-            Int24 => Encoding::Numeric {
-                wire: 3,
-                signed: true,
-            },
-            UInt24 => Encoding::Numeric {
-                wire: 3,
-                signed: false,
-            },
-            Int32 => Encoding::Numeric {
-                wire: 4,
-                signed: true,
-            },
-            UInt32 | Real32 => Encoding::Numeric {
-                wire: 4,
-                signed: false,
-            },
-            Int40 => Encoding::Numeric {
-                wire: 5,
-                signed: true,
-            },
-            UInt40 => Encoding::Numeric {
-                wire: 5,
-                signed: false,
-            },
-            Int48 => Encoding::Numeric {
-                wire: 6,
-                signed: true,
-            },
-            UInt48 => Encoding::Numeric {
-                wire: 6,
-                signed: false,
-            },
-            Int56 => Encoding::Numeric {
-                wire: 7,
-                signed: true,
-            },
-            UInt56 => Encoding::Numeric {
-                wire: 7,
-                signed: false,
-            },
-            Int64 => Encoding::Numeric {
-                wire: 8,
-                signed: true,
-            },
-            UInt64 | Real64 => Encoding::Numeric {
-                wire: 8,
-                signed: false,
-            },
+            Bool | UInt8 => unsigned(1),
+            Int8 => signed(1),
+            Int16 => signed(2),
+            UInt16 => unsigned(2),
+            Int24 => signed(3),
+            UInt24 => unsigned(3),
+            Int32 => signed(4),
+            UInt32 | Real32 => unsigned(4),
+            Int40 => signed(5),
+            UInt40 => unsigned(5),
+            Int48 => signed(6),
+            UInt48 => unsigned(6),
+            Int56 => signed(7),
+            UInt56 => unsigned(7),
+            Int64 => signed(8),
+            UInt64 | Real64 => unsigned(8),
             TimeOfDay | TimeDiff => Encoding::Time,
             VString | OString | UString | Domain => Encoding::Bytes,
         }

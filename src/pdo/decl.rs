@@ -92,22 +92,10 @@ impl CommuDefaults {
 pub const fn commu_subs(v: &'static CommuVars, d: &'static CommuDefaults) -> [ObdSubEntry; 5] {
     [
         ObdSubEntry::rom(0, DataType::UInt8, Access::CR, &COMMU_SUB0),
-        ObdSubEntry::ram(1, DataType::UInt32, Access::SRW, &v.cob_id, Some(&d.cob_id)),
-        ObdSubEntry::ram(
-            2,
-            DataType::UInt8,
-            Access::SRW,
-            &v.tx_type,
-            Some(&d.tx_type),
-        ),
-        ObdSubEntry::ram(
-            3,
-            DataType::UInt16,
-            Access::SRW,
-            &v.inhibit,
-            Some(&d.inhibit),
-        ),
-        ObdSubEntry::ram(5, DataType::UInt16, Access::SRW, &v.event, Some(&d.event)),
+        ObdSubEntry::param(1, DataType::UInt32, &v.cob_id, &d.cob_id),
+        ObdSubEntry::param(2, DataType::UInt8, &v.tx_type, &d.tx_type),
+        ObdSubEntry::param(3, DataType::UInt16, &v.inhibit, &d.inhibit),
+        ObdSubEntry::param(5, DataType::UInt16, &v.event, &d.event),
     ]
 }
 
@@ -167,15 +155,14 @@ pub const fn mapp_subs(
 ) -> [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] {
     let mut subs = [const { ObdSubEntry::rom(0, DataType::UInt8, Access::CR, &COMMU_SUB0) };
         PDO_MAX_MAPPENTRIES + 1];
-    subs[0] = ObdSubEntry::ram(0, DataType::UInt8, Access::SRW, &v.count, Some(&d.count));
+    subs[0] = ObdSubEntry::param(0, DataType::UInt8, &v.count, &d.count);
     let mut i = 0;
     while i < PDO_MAX_MAPPENTRIES {
-        subs[i + 1] = ObdSubEntry::ram(
+        subs[i + 1] = ObdSubEntry::param(
             (i + 1) as u8,
             DataType::UInt32,
-            Access::SRW,
             &v.entries[i],
-            Some(&d.entries[i]),
+            &d.entries[i],
         );
         i += 1;
     }

@@ -58,21 +58,22 @@ pub const DEFAULT_TIMEOUT_TICKS: u32 = 5000;
 /// CRC); a server that switches anyway is followed.
 pub const BLOCK_UPLOAD_PST: u8 = 0;
 
-/// Transfer state (`tSdocState`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[repr(u8)]
-pub enum SdocState {
-    /// kSdocTransferNotActive.
-    #[default]
-    NotActive = 0,
-    /// kSdocTransferRunning.
-    Running = 1,
-    /// kSdocTransferTxAborted: this client aborted (timeout, bad reply).
-    TxAborted = 2,
-    /// kSdocTransferRxAborted: the server aborted.
-    RxAborted = 3,
-    /// kSdocTransferFinished.
-    Finished = 4,
+c_enum! {
+    /// Transfer state (`tSdocState`).
+    #[derive(Default)]
+    pub enum SdocState: u8, fn from_u8(u8) {
+        /// kSdocTransferNotActive.
+        #[default]
+        NotActive = 0,
+        /// kSdocTransferRunning.
+        Running = 1,
+        /// kSdocTransferTxAborted: this client aborted (timeout, bad reply).
+        TxAborted = 2,
+        /// kSdocTransferRxAborted: the server aborted.
+        RxAborted = 3,
+        /// kSdocTransferFinished.
+        Finished = 4,
+    }
 }
 
 /// Protocol and direction of a transfer (`tSdocType`).
@@ -158,11 +159,7 @@ pub struct SdoClient {
     channels: [Channel; CAPACITY],
 }
 
-impl Default for SdoClient {
-    fn default() -> Self {
-        Self::new()
-    }
-}
+crate::od::decl::default_is_new!(SdoClient);
 
 fn cob_id(v: u32) -> Option<CanId> {
     if v & 0x8000_0000 != 0 {
@@ -756,14 +753,22 @@ fn step(t: &mut Transfer, reply: ServerFrame) -> Step {
 /// belong to the transfer.
 fn block_step(t: &mut Transfer, dir: Direction, phase: Phase, reply: ServerFrame) -> Option<Step> {
     Some(match (dir, phase, reply) {
+        // The answer to an initiate request for another object.
         (
             Direction::BlockDownload,
             Phase::InitiateSent,
-            ServerFrame::BlockDownloadInitiateResponse { mux, crc, blksize },
+            ServerFrame::BlockDownloadInitiateResponse { mux, .. },
+        )
+        | (
+            Direction::BlockUpload,
+            Phase::InitiateSent,
+            ServerFrame::BlockUploadInitiateResponse { mux, .. },
+        ) if mux != t.mux => Step::Abort(SdoAbort::General.code()),
+        (
+            Direction::BlockDownload,
+            Phase::InitiateSent,
+            ServerFrame::BlockDownloadInitiateResponse { crc, blksize, .. },
         ) => {
-            if mux != t.mux {
-                return Some(Step::Abort(SdoAbort::General.code()));
-            }
             if !valid_blksize(blksize) {
                 return Some(Step::Abort(SdoAbort::InvalidBlockSize.code()));
             }
@@ -796,11 +801,8 @@ fn block_step(t: &mut Transfer, dir: Direction, phase: Phase, reply: ServerFrame
         (
             Direction::BlockUpload,
             Phase::InitiateSent,
-            ServerFrame::BlockUploadInitiateResponse { mux, crc, size },
+            ServerFrame::BlockUploadInitiateResponse { crc, size, .. },
         ) => {
-            if mux != t.mux {
-                return Some(Step::Abort(SdoAbort::General.code()));
-            }
             if size.is_some_and(|s| s as usize > t.len) {
                 return Some(Step::Abort(SdoAbort::OutOfMemory.code()));
             }

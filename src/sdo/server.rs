@@ -231,11 +231,7 @@ pub struct SdoServer {
     buf: [u8; SDOS_BUFFER_SIZE],
 }
 
-impl Default for SdoServer {
-    fn default() -> Self {
-        Self::new()
-    }
-}
+crate::od::decl::default_is_new!(SdoServer);
 
 impl SdoServer {
     /// An unconfigured server: it answers nothing until
@@ -409,6 +405,29 @@ impl SdoServer {
     }
 
     /// Ends the transfer and builds the abort frame.
+    /// Starts a segmented or block download after the checks of its
+    /// initiate request: the object must be writable with the announced
+    /// size, and the size must fit the buffer. `start` gives the transfer
+    /// and the reply for the size; a refusal is the abort instead.
+    fn start_download(
+        &mut self,
+        od: &ObjectDictionary,
+        mux: Multiplexer,
+        size: Option<u32>,
+        start: impl FnOnce(Option<usize>) -> (Transfer, ServerFrame),
+    ) -> ServerFrame {
+        let size = size.map(|s| usize::try_from(s).unwrap_or(usize::MAX));
+        if let Err(e) = od.begin_write(mux.index, mux.sub, size) {
+            return self.abort(mux, e.abort);
+        }
+        if size.is_some_and(|s| s > self.buf.len()) {
+            return self.abort(mux, SdoAbort::LengthTooHigh.code());
+        }
+        let (transfer, reply) = start(size);
+        self.transfer = transfer;
+        reply
+    }
+
     fn abort(&mut self, mux: Multiplexer, code: u32) -> ServerFrame {
         self.transfer = Transfer::Idle;
         ServerFrame::Abort { mux, code }
@@ -626,23 +645,17 @@ impl SdoServer {
                     Err(e) => self.abort(mux, e.abort),
                 }
             }
-            Initiate::Segmented { size } => {
-                let size = size.map(|s| usize::try_from(s).unwrap_or(usize::MAX));
-                if let Err(e) = od.begin_write(mux.index, mux.sub, size) {
-                    return self.abort(mux, e.abort);
-                }
-                if size.is_some_and(|s| s > self.buf.len()) {
-                    return self.abort(mux, SdoAbort::LengthTooHigh.code());
-                }
-                self.transfer = Transfer::Download(Download {
+            Initiate::Segmented { size } => self.start_download(od, mux, size, |size| {
+                let down = Download {
                     mux,
                     size,
                     received: 0,
                     toggle: false,
                     last_rx: now,
-                });
-                ServerFrame::InitiateDownloadResponse { mux }
-            }
+                };
+                let reply = ServerFrame::InitiateDownloadResponse { mux };
+                (Transfer::Download(down), reply)
+            }),
         }
     }
 
@@ -695,27 +708,23 @@ impl SdoServer {
         size: Option<u32>,
         now: Ticks,
     ) -> ServerFrame {
-        let size = size.map(|s| usize::try_from(s).unwrap_or(usize::MAX));
-        if let Err(e) = od.begin_write(mux.index, mux.sub, size) {
-            return self.abort(mux, e.abort);
-        }
-        if size.is_some_and(|s| s > self.buf.len()) {
-            return self.abort(mux, SdoAbort::LengthTooHigh.code());
-        }
-        self.transfer = Transfer::BlockDown(BlockDownload {
-            mux,
-            size,
-            crc,
-            rx: BlockRx::new(SDO_BLOCKSIZE_DOWNLOAD),
-            phase: BlockDownPhase::SubBlock,
-            crc_acc: 0,
-            last_rx: now,
-        });
-        ServerFrame::BlockDownloadInitiateResponse {
-            mux,
-            crc: true,
-            blksize: SDO_BLOCKSIZE_DOWNLOAD,
-        }
+        self.start_download(od, mux, size, |size| {
+            let reply = ServerFrame::BlockDownloadInitiateResponse {
+                mux,
+                crc: true,
+                blksize: SDO_BLOCKSIZE_DOWNLOAD,
+            };
+            let down = BlockDownload {
+                mux,
+                size,
+                crc,
+                rx: BlockRx::new(SDO_BLOCKSIZE_DOWNLOAD),
+                phase: BlockDownPhase::SubBlock,
+                crc_acc: 0,
+                last_rx: now,
+            };
+            (Transfer::BlockDown(down), reply)
+        })
     }
 
     /// A segment of a block download (`d` is the transfer before it).

@@ -135,27 +135,16 @@ pub mod status {
     pub const RESERVED_MASK: u8 = 0x0F;
 }
 
-/// Information direction (0x1301+n sub 1, manual table 2).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[repr(u8)]
-pub enum Direction {
-    /// The SRDO is switched off.
-    Off = 0,
-    /// Transmit SRDO.
-    Transmit = 1,
-    /// Receive SRDO.
-    Receive = 2,
-}
-
-impl Direction {
-    /// Decodes a direction value; 3..=255 are reserved.
-    pub const fn from_u8(v: u8) -> Option<Direction> {
-        match v {
-            0 => Some(Direction::Off),
-            1 => Some(Direction::Transmit),
-            2 => Some(Direction::Receive),
-            _ => None,
-        }
+c_enum! {
+    /// Information direction (0x1301+n sub 1, manual table 2); 3..=255 are
+    /// reserved (`from_u8` gives `None`).
+    pub enum Direction: u8, fn from_u8(u8) {
+        /// The SRDO is switched off.
+        Off = 0,
+        /// Transmit SRDO.
+        Transmit = 1,
+        /// Receive SRDO.
+        Receive = 2,
     }
 }
 

@@ -113,42 +113,12 @@ pub const fn commu_subs(
 ) -> [ObdSubEntry; COMMU_SUBS] {
     [
         ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[6]),
-        ObdSubEntry::ram(
-            1,
-            DataType::UInt8,
-            Access::SRW,
-            &vars.direction,
-            Some(&defaults.direction),
-        ),
-        ObdSubEntry::ram(
-            2,
-            DataType::UInt16,
-            Access::SRW,
-            &vars.sct,
-            Some(&defaults.sct),
-        ),
-        ObdSubEntry::ram(
-            3,
-            DataType::UInt8,
-            Access::SRW,
-            &vars.srvt,
-            Some(&defaults.srvt),
-        ),
+        ObdSubEntry::param(1, DataType::UInt8, &vars.direction, &defaults.direction),
+        ObdSubEntry::param(2, DataType::UInt16, &vars.sct, &defaults.sct),
+        ObdSubEntry::param(3, DataType::UInt8, &vars.srvt, &defaults.srvt),
         ObdSubEntry::rom(4, DataType::UInt8, Access::R, &[254]),
-        ObdSubEntry::ram(
-            5,
-            DataType::UInt32,
-            Access::SRW,
-            &vars.cob1,
-            Some(&defaults.cob1),
-        ),
-        ObdSubEntry::ram(
-            6,
-            DataType::UInt32,
-            Access::SRW,
-            &vars.cob2,
-            Some(&defaults.cob2),
-        ),
+        ObdSubEntry::param(5, DataType::UInt32, &vars.cob1, &defaults.cob1),
+        ObdSubEntry::param(6, DataType::UInt32, &vars.cob2, &defaults.cob2),
     ]
 }
 
@@ -215,13 +185,7 @@ pub const fn mapp_subs(
     subs[0] = if crate::config::SRDO_USE_STATIC_MAPPING {
         ObdSubEntry::rom(0, DataType::UInt8, Access::R, &defaults.count)
     } else {
-        ObdSubEntry::ram(
-            0,
-            DataType::UInt8,
-            Access::SRW,
-            &vars.count,
-            Some(&defaults.count),
-        )
+        ObdSubEntry::param(0, DataType::UInt8, &vars.count, &defaults.count)
     };
     let mut i = 0;
     while i < SRDO_MAX_MAPPENTRIES {
@@ -231,15 +195,15 @@ pub const fn mapp_subs(
         subs[i + 1] = if crate::config::SRDO_USE_STATIC_MAPPING {
             ObdSubEntry::rom(sub, DataType::UInt32, Access::R, def)
         } else {
-            ObdSubEntry::ram(sub, DataType::UInt32, Access::SRW, var, Some(def))
+            ObdSubEntry::param(sub, DataType::UInt32, var, def)
         };
         i += 1;
     }
     subs
 }
 
-/// The subindex table of 0x1300 (GFC parameter, default 0).
-pub const fn gfc_param_subs(var: &'static [AtomicU8; 1]) -> [ObdSubEntry; 1] {
+/// One RW UNSIGNED8 subindex 0 with default 0 (0x1300, 0x13FE).
+const fn byte_subs(var: &'static [AtomicU8; 1]) -> [ObdSubEntry; 1] {
     [ObdSubEntry::ram(
         0,
         DataType::UInt8,
@@ -249,15 +213,14 @@ pub const fn gfc_param_subs(var: &'static [AtomicU8; 1]) -> [ObdSubEntry; 1] {
     )]
 }
 
+/// The subindex table of 0x1300 (GFC parameter, default 0).
+pub const fn gfc_param_subs(var: &'static [AtomicU8; 1]) -> [ObdSubEntry; 1] {
+    byte_subs(var)
+}
+
 /// The subindex table of 0x13FE (configuration valid, default 0).
 pub const fn cfg_valid_subs(var: &'static [AtomicU8; 1]) -> [ObdSubEntry; 1] {
-    [ObdSubEntry::ram(
-        0,
-        DataType::UInt8,
-        Access::RW,
-        var,
-        Some(&[0]),
-    )]
+    byte_subs(var)
 }
 
 /// The CRC defaults in CPU byte order, two bytes per entry.
@@ -297,17 +260,27 @@ pub const fn crc_subs<const S: usize>(
     subs
 }
 
+/// The one-byte objects 0x1300 and 0x13FE in a module `$m`: the object
+/// `$crate::srdo::$index` with the subindex table `objects::$subs`.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __obd_srdo_byte_object {
+    ($vis:vis mod $m:ident, $index:ident, $subs:ident) => {
+        #[allow(missing_docs)]
+        $vis mod $m {
+            pub const INDEX: u16 = $crate::srdo::$index;
+            pub static VALUE: [::core::sync::atomic::AtomicU8; 1] = $crate::od::decl::zeroed();
+            pub static SUBS: [$crate::od::ObdSubEntry; 1] =
+                $crate::srdo::objects::$subs(&VALUE);
+        }
+    };
+}
+
 /// `OBD_CREATE_SRDO_GFC_PARAM()`: object 0x1300 in a module `$m`.
 #[macro_export]
 macro_rules! obd_create_srdo_gfc_param {
     ($vis:vis mod $m:ident) => {
-        #[allow(missing_docs)]
-        $vis mod $m {
-            pub const INDEX: u16 = $crate::srdo::GFC_PARAM_INDEX;
-            pub static VALUE: [::core::sync::atomic::AtomicU8; 1] = $crate::od::decl::zeroed();
-            pub static SUBS: [$crate::od::ObdSubEntry; 1] =
-                $crate::srdo::objects::gfc_param_subs(&VALUE);
-        }
+        $crate::__obd_srdo_byte_object!($vis mod $m, GFC_PARAM_INDEX, gfc_param_subs);
     };
 }
 
@@ -352,13 +325,7 @@ macro_rules! obd_create_srdo_mapp {
 #[macro_export]
 macro_rules! obd_create_srdo_cfg_valid {
     ($vis:vis mod $m:ident) => {
-        #[allow(missing_docs)]
-        $vis mod $m {
-            pub const INDEX: u16 = $crate::srdo::CONFIG_VALID_INDEX;
-            pub static VALUE: [::core::sync::atomic::AtomicU8; 1] = $crate::od::decl::zeroed();
-            pub static SUBS: [$crate::od::ObdSubEntry; 1] =
-                $crate::srdo::objects::cfg_valid_subs(&VALUE);
-        }
+        $crate::__obd_srdo_byte_object!($vis mod $m, CONFIG_VALID_INDEX, cfg_valid_subs);
     };
 }
 

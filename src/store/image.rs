@@ -575,11 +575,7 @@ impl SignatureDigest {
     }
 }
 
-impl Default for SignatureDigest {
-    fn default() -> Self {
-        Self::new()
-    }
-}
+crate::od::decl::default_is_new!(SignatureDigest);
 
 #[cfg(test)]
 #[path = "image_tests.rs"]

@@ -80,11 +80,7 @@ pub struct SyncProducer {
     next: Ticks,
 }
 
-impl Default for SyncProducer {
-    fn default() -> Self {
-        Self::new()
-    }
-}
+crate::od::decl::default_is_new!(SyncProducer);
 
 impl SyncProducer {
     /// A producer that sends nothing.
@@ -126,12 +122,8 @@ impl SyncProducer {
     /// kept values otherwise). A changed identifier or period restarts the
     /// schedule: the next SYNC follows one period after `now`.
     pub fn reconfigure(&mut self, od: &ObjectDictionary, now: Ticks) {
-        self.cob = od
-            .read_uint(COB_ID_SYNC_INDEX, 0)
-            .map_or(self.own_cob, |v| v as u32);
-        self.cycle_us = od
-            .read_uint(CYCLE_PERIOD_INDEX, 0)
-            .map_or(self.own_cycle_us, |v| v as u32);
+        self.cob = od.read_or(COB_ID_SYNC_INDEX, 0, self.own_cob);
+        self.cycle_us = od.read_or(CYCLE_PERIOD_INDEX, 0, self.own_cycle_us);
         let produce = self.cob & SYNC_PRODUCER != 0 && usable_cob_id(self.cob);
         let id = produce.then(|| CanId::from_cob_id(self.cob & !(COB_INVALID | COB_NO_RTR)));
         let period = if id.is_some() {

@@ -8,33 +8,19 @@ pub const NMT_COB_ID: u16 = 0x000;
 /// Base COB-ID of NMT error control (boot-up, heartbeat, guarding).
 pub const ERROR_CONTROL_BASE: u16 = 0x700;
 
-/// Command specifiers of NMT module control.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[repr(u8)]
-pub enum NmtCs {
-    /// Start remote node.
-    Start = 0x01,
-    /// Stop remote node.
-    Stop = 0x02,
-    /// Enter pre-operational.
-    EnterPreOperational = 0x80,
-    /// Reset node.
-    ResetNode = 0x81,
-    /// Reset communication.
-    ResetCommunication = 0x82,
-}
-
-impl NmtCs {
-    /// Decodes a command specifier.
-    pub const fn from_u8(cs: u8) -> Option<NmtCs> {
-        Some(match cs {
-            0x01 => NmtCs::Start,
-            0x02 => NmtCs::Stop,
-            0x80 => NmtCs::EnterPreOperational,
-            0x81 => NmtCs::ResetNode,
-            0x82 => NmtCs::ResetCommunication,
-            _ => return None,
-        })
+c_enum! {
+    /// Command specifiers of NMT module control.
+    pub enum NmtCs: u8, fn from_u8(u8) {
+        /// Start remote node.
+        Start = 0x01,
+        /// Stop remote node.
+        Stop = 0x02,
+        /// Enter pre-operational.
+        EnterPreOperational = 0x80,
+        /// Reset node.
+        ResetNode = 0x81,
+        /// Reset communication.
+        ResetCommunication = 0x82,
     }
 }
 

@@ -121,6 +121,18 @@ fn read_key(b: &[u8]) -> u32 {
     }
 }
 
+/// Calls the width-generic function `f` with the index's width (`w`, 2
+/// or 4 bytes): the one place that turns the run-time width into a type.
+macro_rules! by_width {
+    ($w:expr, $($f:ident)::+($($arg:expr),*)) => {
+        if $w == 2 {
+            $($f)::+::<W2>($($arg),*)
+        } else {
+            $($f)::+::<W4>($($arg),*)
+        }
+    };
+}
+
 /// Number `i` of an array of numbers.
 fn get<X: Width>(mem: &[u8], i: usize) -> usize {
     mem.get(i * X::W..i * X::W + X::W).map_or(0, X::read)
@@ -328,11 +340,7 @@ impl<'a> Index<'a> {
     /// already) at the end of `scratch`. `None` when the scratch is too
     /// small.
     pub(super) fn build(c: &Container<'a>, scratch: &'a mut [u8]) -> Option<Index<'a>> {
-        if width(c.index_segment().len()) == 2 {
-            Self::build_w::<W2>(c, scratch)
-        } else {
-            Self::build_w::<W4>(c, scratch)
-        }
+        by_width!(width(c.index_segment().len()), Self::build_w(c, scratch))
     }
 
     /// [`Index::build`] with positions and offsets of width `X`.
@@ -480,31 +488,19 @@ impl<'a> Index<'a> {
     /// Position of the entry at `slot` of the sorted order.
     #[inline]
     pub(super) fn position(&self, slot: usize) -> usize {
-        if self.w == 2 {
-            elem::<W2>(self.order, slot).1
-        } else {
-            elem::<W4>(self.order, slot).1
-        }
+        by_width!(self.w, elem(self.order, slot)).1
     }
 
     /// Offset of entry `pos` in the index segment.
     #[inline]
     pub(super) fn offset(&self, pos: usize) -> usize {
-        if self.w == 2 {
-            get::<W2>(self.offsets, pos)
-        } else {
-            get::<W4>(self.offsets, pos)
-        }
+        by_width!(self.w, get(self.offsets, pos))
     }
 
     /// Key (index << 8 | subindex) of the entry at `slot`.
     #[inline]
     pub(super) fn key_at(&self, slot: usize) -> u32 {
-        if self.w == 2 {
-            elem_key::<W2>(self.order, slot)
-        } else {
-            elem_key::<W4>(self.order, slot)
-        }
+        by_width!(self.w, elem_key(self.order, slot))
     }
 
     /// Flags of entry `pos`.
@@ -526,10 +522,6 @@ impl<'a> Index<'a> {
     /// First slot whose key is not below `key` (`entries()` when none).
     #[inline]
     pub(super) fn lower_bound(&self, key: u32) -> usize {
-        if self.w == 2 {
-            lower_bound::<W2>(self.order, self.n, key)
-        } else {
-            lower_bound::<W4>(self.order, self.n, key)
-        }
+        by_width!(self.w, lower_bound(self.order, self.n, key))
     }
 }
