@@ -99,6 +99,8 @@ def main():
     pct = lambda a, b: 100.0 * a / b if b else 100.0
     print(f"coverage: lines {pct(tot['lines_covered'], tot['lines']):.1f} %, "
           f"branches {pct(tot['branches_covered'], tot['branches']):.1f} %, {unexplained} unexplained")
+    # A place that is not covered and has no recorded reason is new: fail.
+    sys.exit(1 if unexplained else 0)
 
 
 if __name__ == "__main__":

@@ -14,6 +14,9 @@ import sys
 import tomllib
 
 RANK = {"caught": 3, "timeout": 2, "missed": 1, "unviable": 0}
+# --iterate keeps the mutants earlier runs caught in previously_caught.txt.
+FILES = {"caught": ["caught.txt", "previously_caught.txt"], "timeout": ["timeout.txt"],
+         "missed": ["missed.txt"], "unviable": ["unviable.txt"]}
 LOC = re.compile(r"^(?P<file>[^:]+):(?P<line>\d+):(?P<col>\d+): (?P<what>.*)$")
 
 
@@ -34,10 +37,8 @@ def main():
         run = d.parent.name
         configs[run] = {}
         for outcome in RANK:
-            f = d / f"{outcome}.txt"
-            if not f.exists():
-                continue
-            for line in f.read_text().splitlines():
+            text = "".join((d / n).read_text() + "\n" for n in FILES[outcome] if (d / n).exists())
+            for line in text.splitlines():
                 k = key(line)
                 if k is None:
                     continue

@@ -1256,3 +1256,12 @@ mod sixty_four {
         assert!(steps >= 63);
     }
 }
+
+#[test]
+fn default_is_a_module_without_srdos() {
+    let d = Srdo::default();
+    assert_eq!(d.count(), 0);
+    assert_eq!(d.commu_indices().count(), 0);
+    assert!(!d.is_running());
+    assert_eq!(d.gfc_ignored(), 0);
+}
