@@ -82,9 +82,10 @@ def main():
             nb = sum(1 for k, h in br.items() if k[0] == n and h == 0)
             if nb:
                 what.append(f"{nb} branch{'es' if nb > 1 else ''}")
-            code = src[n - 1].strip().replace("|", "\\|") if n - 1 < len(src) else ""
+            raw = src[n - 1].strip() if n - 1 < len(src) else ""
+            code = raw.replace("|", "\\|")
             prev = src[n - 2] if 1 < n <= len(src) + 1 else ""
-            reason = reason_for(f, code, prev)
+            reason = reason_for(f, raw, prev)
             if reason is None:
                 unexplained += 1
                 reason = "**not yet explained**"
