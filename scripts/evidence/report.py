@@ -23,6 +23,16 @@ def pct(a, b):
     return 100.0 * a / b if b else 100.0
 
 
+def core_figures(cov):
+    """The totals without src/srdo/objects.rs, whose macro_rules! bodies are
+    counted at their expansion sites."""
+    fs = [f for f in cov if f not in ("total", "unexplained", "src/srdo/objects.rs")]
+    lc, ln = sum(cov[f]["lines_covered"] for f in fs), sum(cov[f]["lines"] for f in fs)
+    bc, bn = sum(cov[f]["branches_covered"] for f in fs), sum(cov[f]["branches"] for f in fs)
+    return (f"without `src/srdo/objects.rs` (macro bodies) lines {lc}/{ln} ({pct(lc, ln):.1f} %), "
+            f"branches {bc}/{bn} ({pct(bc, bn):.1f} %)")
+
+
 def coverage_figure(cov, out):
     files = [f for f in cov if f not in ("total", "unexplained")]
     names = [f.removeprefix("src/") for f in files]
@@ -91,7 +101,8 @@ def main():
         md += [f"Lines {t['lines_covered']}/{t['lines']} ({pct(t['lines_covered'], t['lines']):.1f} %), "
                f"branches {t['branches_covered']}/{t['branches']} ({pct(t['branches_covered'], t['branches']):.1f} %), "
                "merged over the three switch configurations of `scripts/test.sh rust` (Rust tests) and the C tests "
-               "(CTest, linked against the instrumented library). "
+               "(CTest, linked against the instrumented library); "
+               + core_figures(cov) + ". "
                "Every uncovered line and branch: [uncovered.md](uncovered.md).", "",
                "![coverage](coverage.png)", "", "| file | lines | branches |", "|---|---|---|"]
         for f in sorted(k for k in cov if k not in ("total", "unexplained")):
