@@ -168,7 +168,7 @@ cmd_mutants() {
             dir="$WORK/mutants/$(basename "$f" .rs)-$c"
             mkdir -p "$dir"
             [ ! -f "$dir/mutants.out/outcomes.json" ] || iterate=(--iterate)
-            log "mutants: $f in configuration $c ($(cargo mutants --list --file "$f" $(config_args "$c") 2>/dev/null | wc -l) mutants; log $dir/log)"
+            log "mutants: $f in configuration $c ($(cargo mutants --list --file "$f" $(config_args "$c") "${extra[@]}" 2>/dev/null | wc -l) mutants; log $dir/log)"
             # shellcheck disable=SC2046
             cargo mutants -j1 --file "$f" --output "$dir" --no-shuffle "${iterate[@]}" "${shard[@]}" \
                 --baseline skip --timeout 300 --build-timeout 900 \

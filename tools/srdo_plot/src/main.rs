@@ -44,7 +44,9 @@ fn parse(text: &str) -> Result<Campaign, String> {
     let field = |name: &str| -> Result<u64, String> {
         let at = head.find(name).ok_or(format!("no {name} in the header"))?;
         let rest = head[at + name.len()..].trim_start();
-        let digits = rest.find(|c: char| !c.is_ascii_digit()).unwrap_or(rest.len());
+        let digits = rest
+            .find(|c: char| !c.is_ascii_digit())
+            .unwrap_or(rest.len());
         rest[..digits].parse().map_err(|_| format!("bad {name}"))
     };
     let (srvt, sct) = (field("srvt_ticks")?, field("sct_ticks")?);
