@@ -489,6 +489,11 @@ mod dynamic {
                 CopKernel::SrdoErrorMapp,
             ),
             (&[(0x1381, 1, 0x6400_0210)], CopKernel::SrdoErrorMapp),
+            // Both entries of the pair of length 0 (equal lengths).
+            (
+                &[(0x1381, 1, 0x6300_0100), (0x1381, 2, 0x6301_0100)],
+                CopKernel::SrdoErrorMapp,
+            ),
             (
                 &[(0x1381, 1, 0x6400_0320), (0x1381, 2, 0x6301_0120)],
                 CopKernel::SrdoErrorMapp,
