@@ -470,6 +470,8 @@ mod dynamic {
             (&[(0x1301, 2, 0)], CopKernel::SrdoCfgTimingError),
             (&[(0x1301, 3, 0)], CopKernel::SrdoCfgTimingError),
             (&[(0x1301, 2, 19)], CopKernel::SrdoCfgTimingError),
+            // SRVT equal to SCT is allowed (only SRVT > SCT is refused).
+            (&[(0x1301, 3, 25)], CopKernel::Successful),
             (
                 &[(0x1301, 5, 0x102), (0x1301, 6, 0x103)],
                 CopKernel::SrdoCfgIdError,
