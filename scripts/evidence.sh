@@ -167,7 +167,13 @@ cmd_mutants() {
             local dir iterate=()
             dir="$WORK/mutants/$(basename "$f" .rs)-$c"
             mkdir -p "$dir"
-            [ ! -f "$dir/mutants.out/outcomes.json" ] || iterate=(--iterate)
+            if [ -f "$dir/mutants.out/outcomes.json" ]; then
+                # --iterate tests only what earlier runs did not catch; their
+                # outcomes are kept for the combined result.
+                iterate=(--iterate)
+                mkdir -p "$dir/runs"
+                cp -r "$dir/mutants.out" "$dir/runs/$(date -u +%Y%m%dT%H%M%S)"
+            fi
             log "mutants: $f in configuration $c ($(cargo mutants --list --file "$f" $(config_args "$c") "${extra[@]}" 2>/dev/null | wc -l) mutants; log $dir/log)"
             # shellcheck disable=SC2046
             cargo mutants -j1 --file "$f" --output "$dir" --no-shuffle "${iterate[@]}" "${shard[@]}" \
