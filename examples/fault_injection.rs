@@ -6,15 +6,18 @@
 //! ```
 //! Prints the table (class, injected, detected, missed, false alarms,
 //! expected codes) and exits with 1 unless every fault was detected and
-//! nothing else was reported.
+//! nothing else was reported. `--pairs FILE` also writes the timing of every
+//! pair (legal, or late on purpose) as CSV (ticks of 100 µs; `tools/srdo_plot` draws it).
 
+use std::io::Write as _;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use cop::sim::faults::{Config, run};
+use cop::error::CopKernel;
+use cop::sim::faults::{Config, PairTiming, Report, run};
 
 fn usage() -> ExitCode {
-    eprintln!("usage: fault_injection [--cycles N] [--seed N] [--fault-one-in N]");
+    eprintln!("usage: fault_injection [--cycles N] [--seed N] [--fault-one-in N] [--pairs FILE]");
     ExitCode::from(2)
 }
 
@@ -28,9 +31,18 @@ fn number(s: &str) -> Option<u64> {
 
 fn main() -> ExitCode {
     let mut cfg = Config::new(1_000_000, 1);
+    let mut pairs = None;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
-        let Some(v) = args.next().as_deref().and_then(number) else {
+        let Some(value) = args.next() else {
+            return usage();
+        };
+        if a == "--pairs" {
+            cfg.record_pairs = true;
+            pairs = Some(value);
+            continue;
+        }
+        let Some(v) = number(&value) else {
             return usage();
         };
         match a.as_str() {
@@ -49,6 +61,12 @@ fn main() -> ExitCode {
         }
     };
     print!("{}", report.table());
+    if let Some(path) = pairs {
+        if let Err(e) = write_pairs(&path, &report) {
+            eprintln!("{path}: {e}");
+            return ExitCode::from(2);
+        }
+    }
     println!("wall time {:.1} s", started.elapsed().as_secs_f64());
     if report.passed() {
         println!("PASS: every injected fault detected, no false alarm");
@@ -57,4 +75,28 @@ fn main() -> ExitCode {
         println!("FAIL");
         ExitCode::FAILURE
     }
+}
+
+/// The accepted pairs as CSV: the limits in the header, one pair a line.
+fn write_pairs(path: &str, report: &Report) -> std::io::Result<()> {
+    let mut w = std::io::BufWriter::new(std::fs::File::create(path)?);
+    writeln!(
+        w,
+        "# seed {:#x}, {} producer cycles, ticks of 100 us, srvt_ticks {}, sct_ticks {}",
+        report.seed,
+        report.cycles,
+        PairTiming::SRVT_TICKS,
+        PairTiming::SCT_TICKS
+    )?;
+    writeln!(w, "gap_ticks,period_ticks,reported")?;
+    for p in &report.pairs {
+        let reported = match p.reported {
+            None => "",
+            Some(CopKernel::SrdoSrvtTimeout) => "srvt",
+            Some(CopKernel::SrdoSctTimeout) => "sct",
+            Some(_) => "other",
+        };
+        writeln!(w, "{},{},{reported}", p.gap_ticks, p.period_ticks)?;
+    }
+    w.flush()
 }

@@ -296,6 +296,7 @@ fn sample_entries() -> Vec<Spec> {
 }
 
 node!(build_sample);
+// req: D-2.1.2-INDEX, D-2.1.2-NETVAR, D-2.1.4-ATTRIBUTES
 #[test]
 fn container_values_are_read_back() {
     let bus = SimBus::new();
@@ -347,6 +348,7 @@ fn container_values_are_read_back() {
 
 node!(image_rule);
 static IMAGE_RULE: [AtomicU8; 32] = decl::zeroed();
+// req: D-6-OFFSETS
 #[test]
 fn network_variables_are_placed_by_the_offset_rule() {
     let bus = SimBus::new();
@@ -377,6 +379,7 @@ fn network_variables_are_placed_by_the_offset_rule() {
 
 node!(image_address);
 static IMAGE_ADDRESS: [AtomicU8; 64] = decl::zeroed();
+// req: D-2.1.3-ADDRESS, D-2.1.5-PIPARAM
 #[test]
 fn address_segment_and_parameter_segment_win() {
     let bus = SimBus::new();
@@ -431,6 +434,7 @@ fn variables_sharing_bytes_or_outside_the_image_are_refused() {
 }
 
 node!(refusals);
+// req: D-2.1.2-PDO-PAIR, D-5.1-CODES
 #[test]
 fn refused_containers_change_nothing() {
     let bus = SimBus::new();
@@ -526,6 +530,7 @@ fn refused_containers_change_nothing() {
 }
 
 node!(malformed);
+// req: D-2.1-CONTAINER
 #[test]
 fn malformed_containers_are_refused_without_change() {
     let bus = SimBus::new();
@@ -624,6 +629,7 @@ fn a_refused_write_midway_puts_everything_back() {
 }
 
 node!(twice);
+// req: D-3-REBUILD, D-5.2-DESTROY
 #[test]
 fn build_twice_destroy_and_rebuild() {
     let bus = SimBus::new();
@@ -659,6 +665,7 @@ fn build_twice_destroy_and_rebuild() {
 
 node!(small_pool);
 static SMALL: DynPool<256> = DynPool::new();
+// req: D-5.1-CODES
 #[test]
 fn a_pool_too_small_is_no_memory() {
     let bus = SimBus::new();
@@ -703,6 +710,7 @@ static IMAGE_A: [AtomicU8; 32] = decl::zeroed();
 static IMAGE_B: [AtomicU8; 32] = decl::zeroed();
 static SDO_BUF: [AtomicU8; 16] = decl::zeroed();
 
+// req: D-2-ACCESS
 #[test]
 fn two_nodes_exchange_network_variables_by_pdo() {
     let bus = SimBus::new();
@@ -1088,6 +1096,7 @@ static IMAGE_COVERAGE: [AtomicU8; 64] = decl::zeroed();
 /// With a parameter segment, every variable of the image lies inside the
 /// image size it names and inside its input or output area; the refusal
 /// names the entry (`DynPool::last_error`, C `DynGetLastError`).
+// req: D-2.1.5-PIPARAM
 #[test]
 fn variables_outside_the_areas_are_refused_and_named() {
     let bus = SimBus::new();

@@ -14,12 +14,17 @@ import sys
 import tomllib
 
 RANK = {"caught": 3, "timeout": 2, "missed": 1, "unviable": 0}
+# previously_caught.txt (--iterate) lumps caught and unviable together: the
+# outcomes come from the runs' own files instead (the current mutants.out,
+# cargo-mutants' mutants.out.old and the copies scripts/evidence.sh keeps in
+# runs/).
+FILES = {o: [f"{o}.txt"] for o in RANK}
 LOC = re.compile(r"^(?P<file>[^:]+):(?P<line>\d+):(?P<col>\d+): (?P<what>.*)$")
 
 
 def key(text):
     m = LOC.match(text.strip())
-    return (m.group("file"), m.group("what"), int(m.group("line"))) if m else None
+    return (m.group("file"), m.group("what"), int(m.group("line")), int(m.group("col"))) if m else None
 
 
 def main():
@@ -30,14 +35,14 @@ def main():
         for e in tomllib.loads(p.read_text()).get("equivalent", []):
             equiv[(e["file"], e["mutant"])] = e["argument"]
     mutants, configs = {}, {}
-    for d in sorted(pathlib.Path(runs).glob("*/mutants.out")):
-        run = d.parent.name
-        configs[run] = {}
+    base = pathlib.Path(runs)
+    outs = sorted(base.glob("*/mutants.out")) + sorted(base.glob("*/mutants.out.old")) + sorted(base.glob("*/runs/*"))
+    for d in outs:
+        run = d.parent.name if d.name.startswith("mutants.out") else d.parent.parent.name
+        configs.setdefault(run, {})
         for outcome in RANK:
-            f = d / f"{outcome}.txt"
-            if not f.exists():
-                continue
-            for line in f.read_text().splitlines():
+            text = "".join((d / n).read_text() + "\n" for n in FILES[outcome] if (d / n).exists())
+            for line in text.splitlines():
                 k = key(line)
                 if k is None:
                     continue
@@ -46,7 +51,7 @@ def main():
                 if prev is None or RANK[outcome] > RANK[prev["outcome"]]:
                     mutants[k] = {"outcome": outcome, "run": run}
     per_file, survivors, unexplained = {}, [], []
-    for (file, what, line), m in sorted(mutants.items()):
+    for (file, what, line, _col), m in sorted(mutants.items()):
         s = per_file.setdefault(file, {o: 0 for o in RANK} | {"equivalent": 0})
         o = m["outcome"]
         if o == "missed" and (file, what) in equiv:

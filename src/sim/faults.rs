@@ -318,6 +318,33 @@ pub struct Report {
     pub counter_wraps: u64,
     /// The first few failures, described.
     pub failures: Vec<String>,
+    /// Timing of every planned pair, in planning order (only with
+    /// [`Config::record_pairs`]).
+    pub pairs: Vec<PairTiming>,
+}
+
+/// Timing of one SRDO pair of the campaign, in ticks of 100 µs (the
+/// evidence report's timing plot): the legal pairs the consumer had to
+/// accept and the pairs that broke SRVT or SCT on purpose. A passing run
+/// has checked every one: each legal pair was accepted in the cycle that
+/// processed its frame 2, each late one reported.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PairTiming {
+    /// From frame 1 to frame 2 (limit: SRVT).
+    pub gap_ticks: u64,
+    /// From frame 1 of the previous valid pair to this frame 1 (limit: SCT).
+    pub period_ticks: u64,
+    /// `None`: accepted without error. `SrdoSrvtTimeout`: frame 2 later
+    /// than SRVT, reported. `SrdoSctTimeout`: frame 1 later than SCT, the
+    /// timeout reported, then the pair accepted.
+    pub reported: Option<CopKernel>,
+}
+
+impl PairTiming {
+    /// SRVT of the campaign in ticks.
+    pub const SRVT_TICKS: u64 = SRVT;
+    /// SCT of the campaign in ticks.
+    pub const SCT_TICKS: u64 = SCT;
 }
 
 impl Report {
@@ -409,6 +436,8 @@ pub struct Config {
     pub seed: u64,
     /// One episode in this many injects a fault.
     pub fault_one_in: u64,
+    /// Keep the timing of every pair in [`Report::pairs`].
+    pub record_pairs: bool,
 }
 
 impl Config {
@@ -418,6 +447,7 @@ impl Config {
             cycles,
             seed,
             fault_one_in: 5,
+            record_pairs: false,
         }
     }
 }
@@ -543,6 +573,7 @@ struct Sim {
     // Observation state.
     values: ([u8; DATA_LEN], [u8; DATA_LEN]),
     report: Report,
+    record_pairs: bool,
 }
 
 fn complement<const N: usize>(d: [u8; N]) -> [u8; N] {
@@ -639,6 +670,7 @@ impl Sim {
             last_data: [0; DATA_LEN],
             values: ([0; DATA_LEN], [0; DATA_LEN]),
             report,
+            record_pairs: cfg.record_pairs,
         })
     }
 
@@ -754,6 +786,8 @@ impl Sim {
         if tn == self.last_valid + SCT {
             self.report.at_sct += 1;
         }
+        let reported = (tn > self.last_valid + SCT).then_some(CopKernel::SrdoSctTimeout);
+        self.record_pair(tn, gap, reported);
         let (data, n, i) = self.send_pair(tn);
         let n_seq = self.act(tn, Act::Deliver(n));
         let i_seq = self.act(tn + gap, Act::Deliver(i));
@@ -763,6 +797,16 @@ impl Sim {
         self.free_from = tn + gap;
         self.report.cycles += 1;
         n_seq
+    }
+
+    fn record_pair(&mut self, tn: u64, gap: u64, reported: Option<CopKernel>) {
+        if self.record_pairs {
+            self.report.pairs.push(PairTiming {
+                gap_ticks: gap,
+                period_ticks: tn.saturating_sub(self.last_valid),
+                reported,
+            });
+        }
     }
 
     /// A fault-free cycle with legal jitter, frame 1 not before `earliest`
@@ -805,6 +849,7 @@ impl Sim {
         if extra == 1 {
             self.report.srvt_plus_one += 1;
         }
+        self.record_pair(tn, SRVT + extra, Some(CopKernel::SrdoSrvtTimeout));
         let (_, n, i) = self.send_pair(tn);
         let n_seq = self.act(tn, Act::Deliver(n));
         let ti = tn + SRVT + extra;

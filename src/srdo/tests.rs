@@ -470,6 +470,8 @@ mod dynamic {
             (&[(0x1301, 2, 0)], CopKernel::SrdoCfgTimingError),
             (&[(0x1301, 3, 0)], CopKernel::SrdoCfgTimingError),
             (&[(0x1301, 2, 19)], CopKernel::SrdoCfgTimingError),
+            // SRVT equal to SCT is allowed (only SRVT > SCT is refused).
+            (&[(0x1301, 3, 25)], CopKernel::Successful),
             (
                 &[(0x1301, 5, 0x102), (0x1301, 6, 0x103)],
                 CopKernel::SrdoCfgIdError,
@@ -489,6 +491,11 @@ mod dynamic {
                 CopKernel::SrdoErrorMapp,
             ),
             (&[(0x1381, 1, 0x6400_0210)], CopKernel::SrdoErrorMapp),
+            // Both entries of the pair of length 0 (equal lengths).
+            (
+                &[(0x1381, 1, 0x6300_0100), (0x1381, 2, 0x6301_0100)],
+                CopKernel::SrdoErrorMapp,
+            ),
             (
                 &[(0x1381, 1, 0x6400_0320), (0x1381, 2, 0x6301_0120)],
                 CopKernel::SrdoErrorMapp,
@@ -1255,4 +1262,13 @@ mod sixty_four {
         assert_eq!(timeouts, (0x1301..=0x133F).collect::<Vec<u16>>());
         assert!(steps >= 63);
     }
+}
+
+#[test]
+fn default_is_a_module_without_srdos() {
+    let d = Srdo::default();
+    assert_eq!(d.count(), 0);
+    assert_eq!(d.commu_indices().count(), 0);
+    assert!(!d.is_running());
+    assert_eq!(d.gfc_ignored(), 0);
 }

@@ -229,6 +229,18 @@ mod tests {
             Err(CobIdError::OutOfRange),
             "above 0x180"
         );
+        // Each identifier is checked on its own: a valid first one does not
+        // let an out-of-range second one through.
+        assert_eq!(
+            SrdoCobIds::new(0x101, 0x100),
+            Err(CobIdError::OutOfRange),
+            "second below 0x101"
+        );
+        assert_eq!(
+            SrdoCobIds::new(0x17F, 0x181),
+            Err(CobIdError::OutOfRange),
+            "second above 0x180"
+        );
         assert_eq!(SrdoCobIds::new(0x102, 0x103), Err(CobIdError::NotOdd));
         assert_eq!(
             SrdoCobIds::new(0x101, 0x104),
@@ -304,5 +316,7 @@ mod tests {
         assert!(is_gfc_id(&long));
         assert!(!is_valid_gfc(&long));
         assert!(!is_valid_gfc(&CanFrame::remote(CanId::std_masked(1), 0)));
+        let other = CanFrame::new(CanId::std_masked(2), &[]);
+        assert!(!is_gfc_id(&other) && !is_valid_gfc(&other));
     }
 }

@@ -25,6 +25,7 @@ fn plan<'a>(bytes: &'a [u8]) -> Result<Plan<'a>, CopKernel> {
     Plan::new(c, &crate::testod::dictionary(), 0)
 }
 
+// req: D-2.1.2-INDEX
 #[test]
 fn new_objects_in_ascending_order_with_last_values() {
     // Unsorted, with a repeated entry and an array without subindex 0.
@@ -55,6 +56,7 @@ fn new_objects_in_ascending_order_with_last_values() {
     assert_eq!(p.snapshot_bytes, 7);
 }
 
+// req: D-2.1.2-NETVAR, D-2.1.4-ATTRIBUTES
 #[test]
 fn types_follow_the_attribute_or_seed_table_2() {
     let b = container(&[
