@@ -133,6 +133,9 @@ pub mod status {
     pub const ERROR_HANDLED: u8 = 0x80;
     /// Bits 0-3: reserved, always 0.
     pub const RESERVED_MASK: u8 = 0x0F;
+    /// Bit 0 (reserved, so never set in the status byte of an SRDO): the
+    /// entry of a number without SRDO in [`super::Srdo::status_table`].
+    pub const ABSENT: u8 = 0x01;
 }
 
 /// Information direction (0x1301+n sub 1, manual table 2).
@@ -216,8 +219,6 @@ struct Slot {
     number: u8,
     /// Direction while running (0 when not running).
     direction: u8,
-    /// Status byte (manual 2.5.3).
-    status: u8,
     /// Data length of each frame in bytes.
     dlc: u8,
     /// [`flag`] bits.
@@ -240,7 +241,6 @@ impl Slot {
         cob1: 0,
         number: 0,
         direction: 0,
-        status: 0,
         dlc: 0,
         flags: 0,
         errors_pending: 0,
@@ -259,6 +259,10 @@ pub struct Srdo {
     count: u8,
     /// Slot + 1 of SRDO n at position n - 1; 0 = no such SRDO.
     slot_of_commu: [u8; MAX_SRDO_NUMBER],
+    /// The status byte (manual 2.5.3) of SRDO n at position n, so that
+    /// `CcmGetSrdoState` / `CcmSetSrdoState` reach it with one look-up;
+    /// [`status::ABSENT`] for a number without SRDO and at position 0.
+    state: [u8; MAX_SRDO_NUMBER + 1],
     /// Slot + 1 of the running receive SRDO using COB-ID 0x101 + position.
     slot_of_cob: [u8; COB_ID_COUNT],
     #[cfg(not(srdo_static_mapping))]
@@ -321,6 +325,12 @@ fn commu_index_of(slots: &[Slot], slot: usize) -> Option<u16> {
         .map(Slot::commu_index)
 }
 
+/// The status byte of SRDO `number` (1..=64) in `state`.
+#[inline(always)]
+fn status_of(state: &mut [u8; MAX_SRDO_NUMBER + 1], number: u8) -> Option<&mut u8> {
+    state.get_mut(usize::from(number))
+}
+
 /// Status after an error: bits 4-5 = 01, bits 6-7 = 01, reserved bits kept.
 const fn error_status(status: u8) -> u8 {
     (status & status::RESERVED_MASK) | status::TRANSFER_FAILED | status::ERROR_REPORTED
@@ -333,6 +343,7 @@ impl Srdo {
             slots: [Slot::EMPTY; SRDO_MAX_SRDO_IN_OBD],
             count: 0,
             slot_of_commu: [0; MAX_SRDO_NUMBER],
+            state: [status::ABSENT; MAX_SRDO_NUMBER + 1],
             slot_of_cob: [0; COB_ID_COUNT],
             #[cfg(not(srdo_static_mapping))]
             plans: [plan::Plan::EMPTY; SRDO_MAX_SRDO_IN_OBD],
@@ -389,9 +400,10 @@ impl Srdo {
             od.find(commu_index + MAPP_OFFSET, 0)
                 .map_err(|e| e.kernel)?;
             od.find(CRC_INDEX, number).map_err(|e| e.kernel)?;
-            let (Some(slot), Some(map)) = (
+            let (Some(slot), Some(map), Some(st)) = (
                 self.slots.get_mut(count),
                 self.slot_of_commu.get_mut(usize::from(number) - 1),
+                self.state.get_mut(usize::from(number)),
             ) else {
                 return Err(CopKernel::NoResource);
             };
@@ -401,6 +413,7 @@ impl Srdo {
             };
             count += 1;
             *map = count as u8;
+            *st = 0;
         }
         if count > 0 {
             od.find(CONFIG_VALID_INDEX, 0).map_err(|e| e.kernel)?;
@@ -502,8 +515,12 @@ impl Srdo {
         }
         if !was {
             for s in self.slots.iter_mut() {
-                s.status = 0;
                 s.errors_pending = 0;
+            }
+            for st in self.state.iter_mut() {
+                if *st != status::ABSENT {
+                    *st = 0;
+                }
             }
             self.start(od, node, now);
         }
@@ -621,7 +638,9 @@ impl Srdo {
             return;
         };
         if s.errors_pending == 0 {
-            s.status = error_status(s.status);
+            if let Some(st) = status_of(&mut self.state, s.number) {
+                *st = error_status(*st);
+            }
         }
         s.errors_pending = s.errors_pending.saturating_add(1);
         q.emit(Event::SrdoError(s.commu_index(), code));
@@ -633,7 +652,9 @@ impl Srdo {
         let Some(s) = self.slots.get_mut(slot) else {
             return;
         };
-        s.status &= !status::TRANSFER_MASK;
+        if let Some(st) = status_of(&mut self.state, s.number) {
+            *st &= !status::TRANSFER_MASK;
+        }
         q.emit(Event::SrdoEvent(s.commu_index()));
         if SRDO_USE_PROGMONITOR {
             q.emit(Event::ProgMon(pm));
@@ -655,9 +676,12 @@ impl Srdo {
             return;
         };
         s.errors_pending = s.errors_pending.saturating_sub(1);
-        let handled = s.status & status::ERROR_MASK == status::ERROR_HANDLED;
+        let Some(st) = status_of(&mut self.state, s.number) else {
+            return;
+        };
+        let handled = *st & status::ERROR_MASK == status::ERROR_HANDLED;
         if s.errors_pending > 0 {
-            s.status = error_status(s.status);
+            *st = error_status(*st);
         }
         if SRDO_USE_PROGMONITOR {
             q.push_front(Action::Emit(Event::ProgMon(ProgMonEvent::SrdoError)));
@@ -1027,11 +1051,11 @@ impl Srdo {
     /// `CcmGetSrdoState`: the status byte; `kCopSrdoNotExist` for an index
     /// that is not an SRDO of this dictionary.
     pub fn get_state(&self, commu_index: u16) -> CopResult<u8> {
-        let slot = self.slot_for(commu_index)?;
-        self.slots
-            .get(slot)
-            .map(|s| s.status)
-            .ok_or(CopKernel::SrdoNotExist)
+        // 0x1300 + n gives n; any other index more than 64 (or 0: absent).
+        match self.state.get(usize::from(commu_index ^ COMMU_BASE)) {
+            Some(&st) if st != status::ABSENT => Ok(st),
+            _ => Err(CopKernel::SrdoNotExist),
+        }
     }
 
     /// `CcmSetSrdoState`: sets bits 4-7 of the status byte; the reserved
@@ -1045,19 +1069,21 @@ impl Srdo {
     }
 
     /// The status byte of an SRDO of this dictionary, `None` for any other
-    /// index: one table look-up and one bounds check (the C API's
-    /// `CcmGetSrdoState` / `CcmSetSrdoState`, called twice per received
-    /// SRDO from `AppSrdoEvent`).
+    /// index: one table look-up and one bounds check.
     #[inline(always)]
     pub fn status_mut(&mut self, commu_index: u16) -> Option<&mut u8> {
-        // Below 0x1301 the difference wraps far beyond the table; slot
-        // entry 0 (no such SRDO) wraps to usize::MAX, beyond the slots.
-        let s = *self
-            .slot_of_commu
-            .get(usize::from(commu_index.wrapping_sub(COMMU_FIRST)))?;
-        self.slots
-            .get_mut(usize::from(s).wrapping_sub(1))
-            .map(|s| &mut s.status)
+        // 0x1300 + n gives n; any other index more than 64 (or 0: absent).
+        self.state
+            .get_mut(usize::from(commu_index ^ COMMU_BASE))
+            .filter(|st| **st != status::ABSENT)
+    }
+
+    /// The table of status bytes (SRDO n at offset n, [`status::ABSENT`]
+    /// at 0 and for a number without SRDO), for the C API's `CcmGetSrdoState` /
+    /// `CcmSetSrdoState`, which reach a byte through it while the stack is
+    /// not borrowed (`src/ffi/global.rs` says when the pointer is valid).
+    pub fn status_table(&mut self) -> *mut [u8; MAX_SRDO_NUMBER + 1] {
+        &mut self.state
     }
 
     /// `SrdoGetCommuParam`: direction and refresh time / SCT as they are in
