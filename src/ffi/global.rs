@@ -110,6 +110,7 @@ fn current_bit() -> u8 {
 }
 
 /// Borrows the current slot's storage; `busy` must be held.
+#[inline(always)]
 fn slot() -> Option<&'static mut MaybeUninit<Instance>> {
     // SAFETY: only called while `busy` is true, so no other reference into
     // the cell exists until the caller clears `busy`.
@@ -118,11 +119,14 @@ fn slot() -> Option<&'static mut MaybeUninit<Instance>> {
 }
 
 /// Borrows the current instance if there is one; `busy` must be held.
+#[inline(always)]
 fn instance() -> Option<&'static mut Instance> {
-    if GLOBAL.live.get() & current_bit() == 0 {
+    let i = GLOBAL.current.get();
+    let s = slot()?;
+    // `slot` found slot `i`, so `i` < MAX_INSTANCES <= 8.
+    if (GLOBAL.live.get() >> i) & 1 == 0 {
         return None;
     }
-    let s = slot()?;
     // SAFETY: the slot's `live` bit is set, so `install` initialised it and
     // `remove` has not taken it out since.
     Some(unsafe { s.assume_init_mut() })
@@ -315,12 +319,13 @@ pub fn pump(mut next: impl FnMut(&mut Instance, crate::port::Ticks) -> Option<Ev
     not_handled
 }
 
-/// Hands one event to the application ([`callbacks::dispatch`]) and
-/// reports a refusal through the error callback. One call per event, out of
-/// line, so that the pump of every API function stays small.
+/// Hands one event to the application ([`callbacks::Pending::call`]) and
+/// reports a refusal through the error callback. Out of line, so that the
+/// pump of every API function stays small, except for the SRDO events of
+/// received and sent SRDOs, which call their callback directly.
 #[inline(never)]
-fn deliver(e: Event, cbs: Callbacks) {
-    if let Some(code) = callbacks::dispatch(e, cbs, current()) {
+fn deliver(p: callbacks::Pending) {
+    if let Some(code) = p.call(current()) {
         report_error(code);
     }
 }
@@ -329,11 +334,15 @@ fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Optio
     let mut not_handled = false;
     loop {
         let now = TgtClock.now();
-        let step = with_inline(|i| next(i, now).map(|e| (e, i.callbacks)));
+        let step = with_inline(|i| next(i, now).map(|e| callbacks::Pending::take(e, &i.callbacks)));
         match step {
-            Ok(Some((e, cbs))) => {
-                not_handled |= matches!(e, Event::SrdoError(_, CopKernel::SrdoNotHandledInApp));
-                deliver(e, cbs);
+            Ok(Some(p @ (callbacks::Pending::SrdoEvent(..) | callbacks::Pending::ProgMon(..)))) => {
+                // These never report an error (`Pending::call`).
+                let _ = p.call(current());
+            }
+            Ok(Some(p)) => {
+                not_handled |= p.is_not_handled();
+                deliver(p);
             }
             _ => break,
         }

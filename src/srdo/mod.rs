@@ -724,7 +724,8 @@ impl Srdo {
     }
 
     /// Offers a received frame; `true` when it was an SRDO or GFC frame.
-    #[inline]
+    /// Inlined into the stack's one receive loop.
+    #[inline(always)]
     pub fn on_frame(&mut self, state: NmtState, frame: &RxFrame, q: &mut ActionQueue) -> bool {
         let f = &frame.frame;
         // An id in 0x101..=0x180 is an 11-bit id (an extended id has its
