@@ -34,7 +34,7 @@ use crate::od::{ByteOrder, Object, ObjectDictionary, Staged, WriteHooks};
 use crate::pdo::Pdo;
 use crate::port::{CanId, CanPort, Priority, RxFrame, Ticks};
 use crate::sdo::{SdoClient, SdoServer};
-use crate::srdo::Srdo;
+use crate::srdo::{Received, Srdo};
 use crate::store::{self, StoreRestore};
 use crate::sync::{self, SyncProducer};
 use crate::wire::emcy::Emergency;
@@ -479,7 +479,9 @@ impl Stack {
     #[inline(always)]
     fn receive_frames(&mut self, port: &mut impl CanPort, now: Ticks) -> Option<Event> {
         while let Some(f) = port.receive() {
-            self.on_frame(port, &f, now);
+            if let Some(e) = self.on_frame(port, &f, now) {
+                return Some(e);
+            }
             if let Some(e) = self.queue.pop_event() {
                 return Some(e);
             }
@@ -594,18 +596,23 @@ impl Stack {
     /// (0x081..=0x0FF) cannot have them, so their decoding is skipped. A
     /// frame the SRDO module does not take goes on to the PDO and SDO
     /// services as before.
+    /// Called with an empty queue; returns the first event the frame
+    /// reports when it comes without the queue (a completed SRDO pair).
     #[inline(always)]
-    fn on_frame(&mut self, port: &mut impl CanPort, rx: &RxFrame, now: Ticks) {
+    fn on_frame(&mut self, port: &mut impl CanPort, rx: &RxFrame, now: Ticks) -> Option<Event> {
         if srdo_or_gfc_id(rx.frame.id)
             && self.connected
             && matches!(self.state, NmtState::Operational | NmtState::PreOperational)
         {
-            if !self.srdo.on_frame(self.state, rx, &mut self.queue) {
-                self.on_service_frame(port, rx, now);
+            match self.srdo.on_frame_first(self.state, rx, &mut self.queue) {
+                Received::Event(e) => return Some(e),
+                Received::Taken => {}
+                Received::NotSrdo => self.on_service_frame(port, rx, now),
             }
-            return;
+            return None;
         }
         self.on_other_frame(port, rx, now);
+        None
     }
 
     /// [`Stack::on_frame`] for every frame but an SRDO or GFC frame while

@@ -115,6 +115,17 @@ pub const MAX_SRDO_NUMBER: usize = 64;
 /// in 100 µs ticks per node-ID (manual 2.5.1).
 pub const FIRST_SEND_DELAY_TICKS_PER_NODE: u32 = 5;
 
+/// What [`Srdo::on_frame_first`] made of a received frame.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Received {
+    /// Not an SRDO or GFC frame of this node.
+    NotSrdo,
+    /// Taken (its events, if any, are queued).
+    Taken,
+    /// Taken; the first event it reports (the rest are queued).
+    Event(Event),
+}
+
 /// Bits of the SRDO status byte (manual 2.5.3).
 pub mod status {
     /// Bits 4-5: result of the last transfer.
@@ -649,18 +660,38 @@ impl Srdo {
 
     #[inline(always)]
     fn report_ok(&mut self, slot: usize, pm: ProgMonEvent, q: &mut ActionQueue) {
-        let Some(s) = self.slots.get_mut(slot) else {
-            return;
-        };
-        if let Some(st) = status_of(&mut self.state, s.number) {
-            *st &= !status::TRANSFER_MASK;
-        }
-        q.emit(Event::SrdoEvent(s.commu_index()));
-        if SRDO_USE_PROGMONITOR {
-            q.emit(Event::ProgMon(pm));
+        if let Some(e) = self.mark_ok(slot) {
+            q.emit(e);
+            Self::progmon(q, pm);
         }
     }
 
+    /// [`Srdo::report_ok`] with an empty queue: returns the success event
+    /// (what the queue would hand out first) and queues the program
+    /// monitor's event after it.
+    #[inline(always)]
+    fn report_ok_first(
+        &mut self,
+        slot: usize,
+        pm: ProgMonEvent,
+        q: &mut ActionQueue,
+    ) -> Option<Event> {
+        let e = self.mark_ok(slot)?;
+        Self::progmon(q, pm);
+        Some(e)
+    }
+
+    /// Status bits 4-5 := 00 (success); the event to report.
+    #[inline(always)]
+    fn mark_ok(&mut self, slot: usize) -> Option<Event> {
+        let s = self.slots.get_mut(slot)?;
+        if let Some(st) = status_of(&mut self.state, s.number) {
+            *st &= !status::TRANSFER_MASK;
+        }
+        Some(Event::SrdoEvent(s.commu_index()))
+    }
+
+    #[inline(always)]
     fn progmon(q: &mut ActionQueue, pm: ProgMonEvent) {
         if SRDO_USE_PROGMONITOR {
             q.emit(Event::ProgMon(pm));
@@ -724,9 +755,34 @@ impl Srdo {
     }
 
     /// Offers a received frame; `true` when it was an SRDO or GFC frame.
-    /// Inlined into the stack's one receive loop.
-    #[inline(always)]
     pub fn on_frame(&mut self, state: NmtState, frame: &RxFrame, q: &mut ActionQueue) -> bool {
+        !matches!(self.take_frame::<false>(state, frame, q), Received::NotSrdo)
+    }
+
+    /// [`Srdo::on_frame`] for a receive loop that offers frames only while
+    /// the queue is empty (the stack's): the success event of a completed
+    /// pair comes back as [`Received::Event`], since the queue would hand
+    /// it out first, instead of going through the queue; everything else
+    /// (errors, the program monitor's event after the success event) is
+    /// queued as by `on_frame`. Inlined into that loop.
+    #[inline(always)]
+    pub fn on_frame_first(
+        &mut self,
+        state: NmtState,
+        frame: &RxFrame,
+        q: &mut ActionQueue,
+    ) -> Received {
+        self.take_frame::<true>(state, frame, q)
+    }
+
+    /// [`Srdo::on_frame`]; with `FIRST` as [`Srdo::on_frame_first`].
+    #[inline(always)]
+    fn take_frame<const FIRST: bool>(
+        &mut self,
+        state: NmtState,
+        frame: &RxFrame,
+        q: &mut ActionQueue,
+    ) -> Received {
         let f = &frame.frame;
         // An id in 0x101..=0x180 is an 11-bit id (an extended id has its
         // flag bit in the raw value); the table holds only the COB-IDs of
@@ -737,25 +793,25 @@ impl Srdo {
             .get(raw.wrapping_sub(u32::from(COB_ID_MIN)) as usize)
         {
             let Some(slot) = entry.checked_sub(1) else {
-                return false;
+                return Received::NotSrdo;
             };
             if f.rtr {
-                return true;
+                return Received::Taken;
             }
             // Odd ids carry the normal data (COB-ID 1), even ids the
             // inverted data.
             if raw & 1 == 1 {
                 self.on_normal(usize::from(slot), frame, q);
-            } else {
-                self.on_inverted(usize::from(slot), frame, q);
+            } else if let Some(e) = self.on_inverted::<FIRST>(usize::from(slot), frame, q) {
+                return Received::Event(e);
             }
-            return true;
+            return Received::Taken;
         }
         if crate::config::SRDO_USE_GFC && wire::is_gfc_id(f) {
             self.on_gfc(f, state, q);
-            return true;
+            return Received::Taken;
         }
-        false
+        Received::NotSrdo
     }
 
     fn on_gfc(&mut self, f: &crate::port::CanFrame, state: NmtState, q: &mut ActionQueue) {
@@ -797,13 +853,16 @@ impl Srdo {
     }
 
     #[inline(always)]
-    fn on_inverted(&mut self, slot: usize, rx: &RxFrame, q: &mut ActionQueue) {
-        let Some(s) = self.slots.get_mut(slot) else {
-            return;
-        };
+    fn on_inverted<const FIRST: bool>(
+        &mut self,
+        slot: usize,
+        rx: &RxFrame,
+        q: &mut ActionQueue,
+    ) -> Option<Event> {
+        let s = self.slots.get_mut(slot)?;
         if s.flags & flag::HOLDING == 0 {
             self.report_error(slot, CopKernel::SrdoNotInOrder, q);
-            return;
+            return None;
         }
         s.flags &= !flag::HOLDING;
         let mask = wire::payload_mask(s.dlc);
@@ -820,7 +879,7 @@ impl Srdo {
             let (first_at, dlc) = (s.held_at, s.dlc);
             if !self.scatter(slot, normal, inverted, dlc) {
                 self.report_error(slot, CopKernel::SrdoErrorMapp, q);
-                return;
+                return None;
             }
             if let Some(s) = self.slots.get_mut(slot) {
                 s.deadline = first_at.plus(s.sct);
@@ -829,10 +888,14 @@ impl Srdo {
                     self.due = s.deadline;
                 }
             }
+            if FIRST {
+                return self.report_ok_first(slot, ProgMonEvent::SrdoReceived, q);
+            }
             self.report_ok(slot, ProgMonEvent::SrdoReceived, q);
-            return;
+            return None;
         };
         self.report_error(slot, code, q);
+        None
     }
 
     // ----------------------------------------------------------------- timers
