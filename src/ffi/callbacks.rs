@@ -2,8 +2,9 @@
 //! the stack becomes a call of one of them — the one adapter between the
 //! stack's events and C function pointers.
 //!
-//! The instance registry ([`super::global`]) hands every event here with
-//! the stack released ([`dispatch`]); the exported functions register the
+//! The instance registry ([`super::global`]) takes each event with its
+//! callback ([`Pending`]) and calls it with the stack released
+//! ([`Pending::call`], [`dispatch`]); the exported functions register the
 //! callbacks (`CcmInitNmtmEx`, `CcmDefinePdoTab`, ...). This module imports
 //! neither of them.
 
