@@ -34,7 +34,7 @@ use crate::od::{ByteOrder, Object, ObjectDictionary, Staged, WriteHooks};
 use crate::pdo::Pdo;
 use crate::port::{CanId, CanPort, Priority, RxFrame, Ticks};
 use crate::sdo::{SdoClient, SdoServer};
-use crate::srdo::Srdo;
+use crate::srdo::{Received, Srdo};
 use crate::store::{self, StoreRestore};
 use crate::sync::{self, SyncProducer};
 use crate::wire::emcy::Emergency;
@@ -416,7 +416,81 @@ impl Stack {
         if let Some(e) = self.queue.pop_event() {
             return Some(e);
         }
+        // The front of the cycle (overrun check, received frames) without
+        // the phase machine: a received SRDO's event goes out from there,
+        // and the poll after the application handled it comes back there,
+        // so only the cycle's last poll enters `poll_work`.
+        if self.queue.is_empty()
+            && matches!(
+                self.phase,
+                Phase::Overrun | Phase::OverrunReport | Phase::Receive
+            )
+        {
+            if let Some(e) = self.poll_front(port, now) {
+                return Some(e);
+            }
+        }
         self.poll_work(port, now)
+    }
+
+    /// The phases up to `Receive` (also for `poll_work`, so that the
+    /// receive path exists once): returns the first event of a received
+    /// frame, or `None` when the phase machine has to go on (the timer
+    /// phases, or actions queued).
+    #[inline(never)]
+    fn poll_front(&mut self, port: &mut impl CanPort, now: Ticks) -> Option<Event> {
+        if self.phase == Phase::Overrun {
+            self.check_overrun(port);
+        }
+        if self.phase == Phase::OverrunReport && (!self.report_overrun() || !self.queue.is_empty())
+        {
+            return None;
+        }
+        self.receive_frames(port, now)
+    }
+
+    /// Phase `Overrun`: identifiers changed outside a cycle, the driver's
+    /// overrun flag.
+    #[inline(always)]
+    fn check_overrun(&mut self, port: &mut impl CanPort) {
+        if core::mem::take(&mut self.resubscribe) {
+            self.subscribe(port);
+        }
+        if port.take_rx_overrun() && self.connected {
+            self.srdo.on_rx_overrun();
+        }
+        self.phase = Phase::OverrunReport;
+    }
+
+    /// Phase `OverrunReport`: one SRDO per step keeps the action queue
+    /// small; `true` when none is left (the phase is then `Receive`).
+    #[inline(always)]
+    fn report_overrun(&mut self) -> bool {
+        let done = self.srdo.report_overrun(&mut self.queue);
+        if done {
+            self.phase = Phase::Receive;
+        }
+        done
+    }
+
+    /// Phase `Receive`: frame after frame while they queue nothing. Returns
+    /// the first event a frame queued; `None` with the phase `SrdoTimers`
+    /// when the driver has no frame left, or with internal work queued.
+    #[inline(always)]
+    fn receive_frames(&mut self, port: &mut impl CanPort, now: Ticks) -> Option<Event> {
+        while let Some(f) = port.receive() {
+            if let Some(e) = self.on_frame(port, &f, now) {
+                return Some(e);
+            }
+            if let Some(e) = self.queue.pop_event() {
+                return Some(e);
+            }
+            if !self.queue.is_empty() {
+                return None;
+            }
+        }
+        self.phase = Phase::SrdoTimers;
+        None
     }
 
     /// [`Stack::poll`]: internal work, the cycle's phases (out of line, so
@@ -434,34 +508,9 @@ impl Stack {
                 }
             }
             match self.phase {
-                Phase::Overrun => {
-                    if core::mem::take(&mut self.resubscribe) {
-                        self.subscribe(port);
-                    }
-                    if port.take_rx_overrun() && self.connected {
-                        self.srdo.on_rx_overrun();
-                    }
-                    self.phase = Phase::OverrunReport;
-                }
-                Phase::OverrunReport => {
-                    // One SRDO per step keeps the action queue small.
-                    if self.srdo.report_overrun(&mut self.queue) {
-                        self.phase = Phase::Receive;
-                    }
-                }
-                Phase::Receive => {
-                    // Frame after frame while they queue nothing.
-                    while let Some(f) = port.receive() {
-                        self.on_frame(port, &f, now);
-                        if let Some(e) = self.queue.pop_event() {
-                            return Some(e);
-                        }
-                        if !self.queue.is_empty() {
-                            break;
-                        }
-                    }
-                    if self.queue.is_empty() {
-                        self.phase = Phase::SrdoTimers;
+                Phase::Overrun | Phase::OverrunReport | Phase::Receive => {
+                    if let Some(e) = self.poll_front(port, now) {
+                        return Some(e);
                     }
                 }
                 Phase::SrdoTimers => {
@@ -541,24 +590,41 @@ impl Stack {
         self.emcy.poll(port, now);
     }
 
-    fn on_frame(&mut self, port: &mut impl CanPort, rx: &RxFrame, now: Ticks) {
+    /// A received frame. SRDO and GFC identifiers first, with one range
+    /// test, inlined into the receive loop: NMT (0x000), error control and
+    /// guarding (0x701..=0x77F) and the emergencies of the consumer
+    /// (0x081..=0x0FF) cannot have them, so their decoding is skipped. A
+    /// frame the SRDO module does not take goes on to the PDO and SDO
+    /// services as before.
+    /// Called with an empty queue; returns the first event the frame
+    /// reports when it comes without the queue (a completed SRDO pair).
+    #[inline(always)]
+    fn on_frame(&mut self, port: &mut impl CanPort, rx: &RxFrame, now: Ticks) -> Option<Event> {
+        if srdo_or_gfc_id(rx.frame.id)
+            && self.connected
+            && matches!(self.state, NmtState::Operational | NmtState::PreOperational)
+        {
+            match self.srdo.on_frame_first(self.state, rx, &mut self.queue) {
+                Received::Event(e) => return Some(e),
+                Received::Taken => {}
+                Received::NotSrdo => self.on_service_frame(port, rx, now),
+            }
+            return None;
+        }
+        self.on_other_frame(port, rx, now);
+        None
+    }
+
+    /// [`Stack::on_frame`] for every frame but an SRDO or GFC frame while
+    /// the node is PRE-OPERATIONAL or OPERATIONAL.
+    #[inline(never)]
+    fn on_other_frame(&mut self, port: &mut impl CanPort, rx: &RxFrame, now: Ticks) {
         if !self.connected || self.state == NmtState::Initialisation {
             return;
         }
         let f = &rx.frame;
-        // SRDO and GFC identifiers first, with one range test: NMT (0x000),
-        // error control and guarding (0x701..=0x77F) and the emergencies of
-        // the consumer (0x081..=0x0FF) cannot have them, so their decoding
-        // is skipped. A frame the SRDO module does not take goes on to the
-        // PDO and SDO services as before.
         if srdo_or_gfc_id(f.id) {
-            if self.state == NmtState::Stopped {
-                return;
-            }
-            if self.srdo.on_frame(self.state, rx, &mut self.queue) {
-                return;
-            }
-            self.on_service_frame(port, rx, now);
+            // STOPPED: neither the SRDO module nor the services take it.
             return;
         }
         if let Some(cmd) = nmt::decode_command(f) {
@@ -594,6 +660,7 @@ impl Stack {
     }
 
     /// The rest of [`Stack::on_frame`]: PDO, SDO client and SDO server.
+    #[inline(never)]
     fn on_service_frame(&mut self, port: &mut impl CanPort, rx: &RxFrame, now: Ticks) {
         let f = &rx.frame;
         let (od, q, emcy) = (&self.od, &mut self.queue, &mut self.emcy);

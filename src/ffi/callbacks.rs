@@ -2,8 +2,9 @@
 //! the stack becomes a call of one of them — the one adapter between the
 //! stack's events and C function pointers.
 //!
-//! The instance registry ([`super::global`]) hands every event here with
-//! the stack released ([`dispatch`]); the exported functions register the
+//! The instance registry ([`super::global`]) takes each event with its
+//! callback ([`Pending`]) and calls it with the stack released
+//! ([`Pending::call`], [`dispatch`]); the exported functions register the
 //! callbacks (`CcmInitNmtmEx`, `CcmDefinePdoTab`, ...). This module imports
 //! neither of them.
 
@@ -39,6 +40,67 @@ pub struct Callbacks {
     pub emcc: tAppEmccEventCallback,
     /// Finish callbacks of the SDO client channels (per transfer).
     pub sdoc: [tSdocCbFinished; crate::sdo::client::CAPACITY],
+}
+
+/// One event with the callback that handles it, taken out of the instance
+/// while it is borrowed and called after it has been released. The SRDO
+/// events of every received or sent SRDO carry only their function
+/// pointer (no copy of [`Callbacks`]).
+#[derive(Clone, Copy)]
+pub(crate) enum Pending {
+    /// `AppSrdoEvent(commu_index)`.
+    SrdoEvent(Option<unsafe extern "C" fn(WORD) -> tCopKernel>, u16),
+    /// `AppProgMonEvent(event)`.
+    ProgMon(Option<unsafe extern "C" fn(u32) -> tCopKernel>, u32),
+    /// Any other event, with all the callbacks ([`dispatch`]).
+    Other(Event, Callbacks),
+}
+
+impl Pending {
+    /// The callback of `ev` among `cbs`.
+    #[inline(always)]
+    pub(crate) fn take(ev: Event, cbs: &Callbacks) -> Pending {
+        match ev {
+            Event::SrdoEvent(idx) => {
+                Pending::SrdoEvent(cbs.srdo.and_then(|c| c.m_fpSrdoEvent), idx)
+            }
+            Event::ProgMon(e) => {
+                Pending::ProgMon(cbs.srdo.and_then(|c| c.m_fpProgMonEvent), e as u32)
+            }
+            _ => Pending::Other(ev, *cbs),
+        }
+    }
+
+    /// Calls the callback as [`dispatch`] does (the SRDO callbacks' return
+    /// values are not evaluated); returns the error to report through the
+    /// error callback, if any.
+    #[inline(always)]
+    pub(crate) fn call(self, instance: usize) -> Option<CopKernel> {
+        match self {
+            Pending::SrdoEvent(Some(cb), idx) => {
+                // SAFETY: AppSrdoEvent of the application (objdef.h).
+                unsafe { cb(idx) };
+                None
+            }
+            Pending::ProgMon(Some(cb), e) => {
+                // SAFETY: AppProgMonEvent of the application (objdef.h).
+                unsafe { cb(e) };
+                None
+            }
+            Pending::SrdoEvent(None, _) | Pending::ProgMon(None, _) => None,
+            Pending::Other(ev, cbs) => dispatch(ev, cbs, instance),
+        }
+    }
+
+    /// An SRDO error the application did not acknowledge
+    /// (kCopSrdoNotHandledInApp).
+    #[inline(always)]
+    pub(crate) fn is_not_handled(&self) -> bool {
+        matches!(
+            self,
+            Pending::Other(Event::SrdoError(_, CopKernel::SrdoNotHandledInApp), _)
+        )
+    }
 }
 
 /// Calls the application for one event of instance `instance`. Runs with

@@ -8,6 +8,12 @@
 //! creating a second mutable reference. Event callbacks (`AppSrdoEvent`,
 //! the NMT callback, ...) run after the stack has been released, so they may
 //! call any `Ccm*` function.
+//!
+//! `CcmGetSrdoState` / `CcmSetSrdoState` reach the status byte through
+//! [`srdo_status`] first: a pointer to the status table of the current
+//! instance, valid exactly while no reference into the instance exists
+//! (`SRDO_GATE`); in every other case they take [`with_srdo_status`] with
+//! the checks and codes of [`with`].
 
 use core::cell::{Cell, UnsafeCell};
 use core::mem::MaybeUninit;
@@ -19,6 +25,7 @@ use crate::ccm::Stack;
 use crate::error::{CopKernel, CopResult, to_code};
 use crate::event::Event;
 use crate::port::Clock;
+use crate::srdo::{MAX_SRDO_NUMBER, status};
 
 /// Everything the C API keeps between calls.
 pub struct Instance {
@@ -47,6 +54,29 @@ struct Global {
     pumping: Cell<bool>,
 }
 
+/// The SRDO status bytes of the current instance while nothing is inside
+/// it (`Srdo::status_table`), else [`NO_SRDO`]: the fast path of
+/// `CcmGetSrdoState` / `CcmSetSrdoState` ([`srdo_status`]). Set to
+/// `NO_SRDO` before anything borrows the instances, and derived again from
+/// the instance as the last step of every [`with`], so that it is never
+/// used while a reference into the instance exists and always comes from
+/// the latest borrow. A static of its own, so that the fast path reaches it
+/// with one load.
+struct SrdoGate(Cell<*mut [u8; MAX_SRDO_NUMBER + 1]>);
+
+// SAFETY: as for `Global` (single-threaded C API).
+unsafe impl Sync for SrdoGate {}
+
+static SRDO_GATE: SrdoGate = SrdoGate(Cell::new(
+    &NO_SRDO as *const [u8; MAX_SRDO_NUMBER + 1] as *mut _,
+));
+
+/// The status table while no instance may be reached through
+/// [`SRDO_GATE`]: every number absent, so the fast path falls back to
+/// [`with_srdo_status`], which finds the right code. Never written (the
+/// fast path writes only to an entry that is not absent).
+static NO_SRDO: [u8; MAX_SRDO_NUMBER + 1] = [status::ABSENT; MAX_SRDO_NUMBER + 1];
+
 // One bit of `live` per instance.
 const _: () = assert!(MAX_INSTANCES <= 8);
 
@@ -63,6 +93,15 @@ static GLOBAL: Global = Global {
     pumping: Cell::new(false),
 };
 
+/// Makes the fast path of [`srdo_status`] fall back (the instance is about
+/// to be borrowed, installed, removed or changed).
+#[inline(always)]
+fn forget_srdo_state() {
+    SRDO_GATE
+        .0
+        .set(&NO_SRDO as *const [u8; MAX_SRDO_NUMBER + 1] as *mut _);
+}
+
 /// The `live` bit of the current slot (0 for an index out of range, which
 /// `select` never sets).
 fn current_bit() -> u8 {
@@ -71,6 +110,7 @@ fn current_bit() -> u8 {
 }
 
 /// Borrows the current slot's storage; `busy` must be held.
+#[inline(always)]
 fn slot() -> Option<&'static mut MaybeUninit<Instance>> {
     // SAFETY: only called while `busy` is true, so no other reference into
     // the cell exists until the caller clears `busy`.
@@ -79,11 +119,14 @@ fn slot() -> Option<&'static mut MaybeUninit<Instance>> {
 }
 
 /// Borrows the current instance if there is one; `busy` must be held.
+#[inline(always)]
 fn instance() -> Option<&'static mut Instance> {
-    if GLOBAL.live.get() & current_bit() == 0 {
+    let i = GLOBAL.current.get();
+    let s = slot()?;
+    // `slot` found slot `i`, so `i` < MAX_INSTANCES <= 8.
+    if (GLOBAL.live.get() >> i) & 1 == 0 {
         return None;
     }
-    let s = slot()?;
     // SAFETY: the slot's `live` bit is set, so `install` initialised it and
     // `remove` has not taken it out since.
     Some(unsafe { s.assume_init_mut() })
@@ -100,6 +143,7 @@ pub fn select(index: usize) -> bool {
     if index >= MAX_INSTANCES || GLOBAL.busy.get() {
         return false;
     }
+    forget_srdo_state();
     GLOBAL.current.set(index);
     true
 }
@@ -117,12 +161,45 @@ fn with_inline<R>(f: impl FnOnce(&mut Instance) -> R) -> Result<R, CopKernel> {
     if GLOBAL.busy.replace(true) {
         return Err(CopKernel::NoResource);
     }
+    forget_srdo_state();
     let r = match instance() {
-        Some(i) => Ok(f(i)),
+        Some(i) => {
+            let r = f(i);
+            SRDO_GATE.0.set(i.stack.srdo_mut().status_table());
+            Ok(r)
+        }
         None => Err(CopKernel::IllegalInstance),
     };
     GLOBAL.busy.set(false);
     r
+}
+
+/// The fast path of `CcmGetSrdoState` / `CcmSetSrdoState`: runs `f` on the
+/// status byte of SRDO `commu_index` of the current instance and returns
+/// `true`, or returns `false` without running it when the byte cannot be
+/// reached this way (no such SRDO, no instance, a nested call, an instance
+/// just installed or selected); the caller then takes [`with_srdo_status`],
+/// which runs the checks in full and returns their codes.
+#[inline(always)]
+pub fn srdo_status(commu_index: u16, f: impl FnOnce(&mut u8)) -> bool {
+    // 0x1300 + n gives n; every other index gives more than 64 (or 0, which
+    // the table has as absent).
+    let n = usize::from(commu_index ^ crate::srdo::COMMU_BASE);
+    if n > MAX_SRDO_NUMBER {
+        return false;
+    }
+    // SAFETY: `SRDO_GATE` points to NO_SRDO (never written: all its
+    // entries are absent, so `f` does not run) or to the status table of
+    // the current instance, set as the last step of `with` and replaced by
+    // NO_SRDO before anything borrows the instances again; no reference
+    // into the instance exists meanwhile (the C API is single-threaded), so
+    // this access aliases nothing. `n` is within the table.
+    let st = unsafe { &mut *SRDO_GATE.0.get().cast::<u8>().add(n) };
+    if *st & status::ABSENT != 0 {
+        return false;
+    }
+    f(st);
+    true
 }
 
 /// [`with`] for the SRDO status byte of `commu_index`, inlined into
@@ -135,14 +212,20 @@ pub fn with_srdo_status(commu_index: u16, f: impl FnOnce(&mut u8)) -> tCopKernel
     if GLOBAL.busy.replace(true) {
         return CopKernel::NoResource.code();
     }
+    forget_srdo_state();
     let r = match instance() {
-        Some(i) => match i.stack.srdo_mut().status_mut(commu_index) {
-            Some(s) => {
-                f(s);
-                CopKernel::Successful.code()
-            }
-            None => CopKernel::SrdoNotExist.code(),
-        },
+        Some(i) => {
+            let srdo = i.stack.srdo_mut();
+            let r = match srdo.status_mut(commu_index) {
+                Some(s) => {
+                    f(s);
+                    CopKernel::Successful.code()
+                }
+                None => CopKernel::SrdoNotExist.code(),
+            };
+            SRDO_GATE.0.set(srdo.status_table());
+            r
+        }
         None => CopKernel::IllegalInstance.code(),
     };
     GLOBAL.busy.set(false);
@@ -155,6 +238,7 @@ pub fn install(i: Instance) -> Result<(), CopKernel> {
     if GLOBAL.busy.replace(true) {
         return Err(CopKernel::NoResource);
     }
+    forget_srdo_state();
     let bit = current_bit();
     let r = match slot() {
         Some(s) if bit != 0 && GLOBAL.live.get() & bit == 0 => {
@@ -173,6 +257,7 @@ pub fn remove() -> Result<Instance, CopKernel> {
     if GLOBAL.busy.replace(true) {
         return Err(CopKernel::NoResource);
     }
+    forget_srdo_state();
     let bit = current_bit();
     let r = match slot() {
         Some(s) if GLOBAL.live.get() & bit != 0 => {
@@ -252,12 +337,13 @@ pub fn pump(mut next: impl FnMut(&mut Instance, crate::port::Ticks) -> Option<Ev
     not_handled
 }
 
-/// Hands one event to the application ([`callbacks::dispatch`]) and
-/// reports a refusal through the error callback. One call per event, out of
-/// line, so that the pump of every API function stays small.
+/// Hands one event to the application ([`callbacks::Pending::call`]) and
+/// reports a refusal through the error callback. Out of line, so that the
+/// pump of every API function stays small, except for the SRDO events of
+/// received and sent SRDOs, which call their callback directly.
 #[inline(never)]
-fn deliver(e: Event, cbs: Callbacks) {
-    if let Some(code) = callbacks::dispatch(e, cbs, current()) {
+fn deliver(p: callbacks::Pending) {
+    if let Some(code) = p.call(current()) {
         report_error(code);
     }
 }
@@ -271,11 +357,15 @@ fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Optio
     let mut not_handled = false;
     loop {
         let now = TgtClock.now();
-        let step = with_inline(|i| next(i, now).map(|e| (e, i.callbacks)));
+        let step = with_inline(|i| next(i, now).map(|e| callbacks::Pending::take(e, &i.callbacks)));
         match step {
-            Ok(Some((e, cbs))) => {
-                not_handled |= matches!(e, Event::SrdoError(_, CopKernel::SrdoNotHandledInApp));
-                deliver(e, cbs);
+            Ok(Some(p @ (callbacks::Pending::SrdoEvent(..) | callbacks::Pending::ProgMon(..)))) => {
+                // These never report an error (`Pending::call`).
+                let _ = p.call(current());
+            }
+            Ok(Some(p)) => {
+                not_handled |= p.is_not_handled();
+                deliver(p);
             }
             _ => break,
         }
@@ -314,7 +404,9 @@ mod tests {
 
     #[test]
     fn instances_are_installed_used_and_removed_once() {
-        // The only test of this binary that uses the process-wide instances.
+        // With the next test, the only tests of this binary that use the
+        // process-wide instances (both hold the SRDO network's lock).
+        let _serial = crate::sim::srdo_net::lock();
         let slot = MAX_INSTANCES - 1;
         assert!(select(slot));
         assert_eq!(with(|_| ()).err(), Some(CopKernel::IllegalInstance));
@@ -350,6 +442,65 @@ mod tests {
         assert_eq!(with(|i| i.stack.node_id()), Ok(9));
         assert_eq!(remove().map(|i| i.stack.node_id()), Ok(9));
         assert!(!select(MAX_INSTANCES));
+        assert!(select(0));
+    }
+
+    /// `srdo_status` (the fast path of `CcmGetSrdoState` /
+    /// `CcmSetSrdoState`) reaches the byte only while the instance is free
+    /// and has the SRDO; everything else falls back to `with_srdo_status`
+    /// and its codes.
+    #[test]
+    fn srdo_status_fast_path_only_while_the_instance_is_free() {
+        let _serial = crate::sim::srdo_net::lock();
+        let slot = MAX_INSTANCES - 1;
+        let read = || {
+            let mut v = None;
+            srdo_status(0x1301, |s| v = Some(*s)).then_some(v).flatten()
+        };
+        assert!(select(slot));
+        assert_eq!(read(), None, "no instance");
+        assert_eq!(
+            with_srdo_status(0x1301, |_| ()),
+            CopKernel::IllegalInstance.code()
+        );
+        let od = crate::sim::srdo_net::consumer::od().unwrap();
+        let mut i = instance(5);
+        i.stack = Stack::new(od, 2).unwrap();
+        assert_eq!(install(i), Ok(()));
+        assert_eq!(read(), None, "not reached through an instance yet");
+        assert_eq!(with_srdo_status(0x1301, |s| *s = 0x30), 0);
+        assert_eq!(read(), Some(0x30), "the table of the latest borrow");
+        assert!(srdo_status(0x1301, |s| *s = 0xC0));
+        assert_eq!(with(|i| i.stack.srdo().get_state(0x1301)), Ok(Ok(0xC0)));
+        // Absent SRDOs and indices that are no SRDO's are never reached.
+        for idx in [0x1300, 0x1303, 0x1340, 0x1341, 0x1401, 0x0301, 0xFFFF] {
+            assert!(!srdo_status(idx, |_| unreachable!()), "{idx:#06x}");
+            assert_eq!(
+                with_srdo_status(idx, |_| ()),
+                CopKernel::SrdoNotExist.code()
+            );
+        }
+        // While the instance is borrowed (an OBD callback's nested call).
+        let nested = with(|_| {
+            (
+                srdo_status(0x1301, |_| unreachable!()),
+                with_srdo_status(0x1301, |_| ()),
+            )
+        });
+        assert_eq!(nested, Ok((false, CopKernel::NoResource.code())));
+        assert_eq!(read(), Some(0xC0));
+        if slot > 0 {
+            assert!(select(0));
+            assert_eq!(read(), None, "another instance selected");
+            assert!(select(slot));
+        }
+        assert_eq!(with_srdo_status(0x1301, |_| ()), 0);
+        assert!(remove().is_ok());
+        assert_eq!(read(), None, "removed");
+        assert_eq!(
+            with_srdo_status(0x1301, |_| ()),
+            CopKernel::IllegalInstance.code()
+        );
         assert!(select(0));
     }
 }

@@ -143,7 +143,15 @@ pub unsafe extern "C" fn CcmGetSrdoState(
 ) -> tCopKernel {
     // SAFETY: the caller's contract (NULL or a writable byte).
     let out = c_try!(unsafe { ptr::out(pbSrdoState_p) });
-    global::with_srdo_status(wSrdoCommuIndex_p, |s| out.set(*s))
+    let mut state = 0;
+    if !global::srdo_status(wSrdoCommuIndex_p, |s| state = *s) {
+        let r = global::with_srdo_status(wSrdoCommuIndex_p, |s| state = *s);
+        if r != CopKernel::Successful.code() {
+            return r;
+        }
+    }
+    out.set(state);
+    CopKernel::Successful.code()
 }
 
 /// `SrdoGetState`: the module function behind `CcmGetSrdoState`.
@@ -163,6 +171,12 @@ pub unsafe extern "C" fn SrdoGetState(
 /// reserved and stay 0). kCopSrdoNotExist.
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmSetSrdoState(bSrdoState_p: BYTE, wSrdoCommuIndex_p: WORD) -> tCopKernel {
+    // The reserved bits 0-3 of an SRDO's status byte are always 0, so
+    // `merge_state` keeps nothing of the old byte on the fast path.
+    let fast = |s: &mut u8| *s = bSrdoState_p & !crate::srdo::status::RESERVED_MASK;
+    if global::srdo_status(wSrdoCommuIndex_p, fast) {
+        return CopKernel::Successful.code();
+    }
     global::with_srdo_status(wSrdoCommuIndex_p, |s| {
         *s = crate::srdo::merge_state(*s, bSrdoState_p);
     })

@@ -115,6 +115,17 @@ pub const MAX_SRDO_NUMBER: usize = 64;
 /// in 100 µs ticks per node-ID (manual 2.5.1).
 pub const FIRST_SEND_DELAY_TICKS_PER_NODE: u32 = 5;
 
+/// What [`Srdo::on_frame_first`] made of a received frame.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Received {
+    /// Not an SRDO or GFC frame of this node.
+    NotSrdo,
+    /// Taken (its events, if any, are queued).
+    Taken,
+    /// Taken; the first event it reports (the rest are queued).
+    Event(Event),
+}
+
 /// Bits of the SRDO status byte (manual 2.5.3).
 pub mod status {
     /// Bits 4-5: result of the last transfer.
@@ -133,6 +144,9 @@ pub mod status {
     pub const ERROR_HANDLED: u8 = 0x80;
     /// Bits 0-3: reserved, always 0.
     pub const RESERVED_MASK: u8 = 0x0F;
+    /// Bit 0 (reserved, so never set in the status byte of an SRDO): the
+    /// entry of a number without SRDO in [`super::Srdo::status_table`].
+    pub const ABSENT: u8 = 0x01;
 }
 
 c_enum! {
@@ -205,8 +219,6 @@ struct Slot {
     number: u8,
     /// Direction while running (0 when not running).
     direction: u8,
-    /// Status byte (manual 2.5.3).
-    status: u8,
     /// Data length of each frame in bytes.
     dlc: u8,
     /// [`flag`] bits.
@@ -229,7 +241,6 @@ impl Slot {
         cob1: 0,
         number: 0,
         direction: 0,
-        status: 0,
         dlc: 0,
         flags: 0,
         errors_pending: 0,
@@ -248,6 +259,10 @@ pub struct Srdo {
     count: u8,
     /// Slot + 1 of SRDO n at position n - 1; 0 = no such SRDO.
     slot_of_commu: [u8; MAX_SRDO_NUMBER],
+    /// The status byte (manual 2.5.3) of SRDO n at position n, so that
+    /// `CcmGetSrdoState` / `CcmSetSrdoState` reach it with one look-up;
+    /// [`status::ABSENT`] for a number without SRDO and at position 0.
+    state: [u8; MAX_SRDO_NUMBER + 1],
     /// Slot + 1 of the running receive SRDO using COB-ID 0x101 + position.
     slot_of_cob: [u8; COB_ID_COUNT],
     #[cfg(not(srdo_static_mapping))]
@@ -310,6 +325,12 @@ fn commu_index_of(slots: &[Slot], slot: usize) -> Option<u16> {
         .map(Slot::commu_index)
 }
 
+/// The status byte of SRDO `number` (1..=64) in `state`.
+#[inline(always)]
+fn status_of(state: &mut [u8; MAX_SRDO_NUMBER + 1], number: u8) -> Option<&mut u8> {
+    state.get_mut(usize::from(number))
+}
+
 /// Status after an error: bits 4-5 = 01, bits 6-7 = 01, reserved bits kept.
 const fn error_status(status: u8) -> u8 {
     (status & status::RESERVED_MASK) | status::TRANSFER_FAILED | status::ERROR_REPORTED
@@ -322,6 +343,7 @@ impl Srdo {
             slots: [Slot::EMPTY; SRDO_MAX_SRDO_IN_OBD],
             count: 0,
             slot_of_commu: [0; MAX_SRDO_NUMBER],
+            state: [status::ABSENT; MAX_SRDO_NUMBER + 1],
             slot_of_cob: [0; COB_ID_COUNT],
             #[cfg(not(srdo_static_mapping))]
             plans: [plan::Plan::EMPTY; SRDO_MAX_SRDO_IN_OBD],
@@ -378,9 +400,10 @@ impl Srdo {
             od.find(commu_index + MAPP_OFFSET, 0)
                 .map_err(|e| e.kernel)?;
             od.find(CRC_INDEX, number).map_err(|e| e.kernel)?;
-            let (Some(slot), Some(map)) = (
+            let (Some(slot), Some(map), Some(st)) = (
                 self.slots.get_mut(count),
                 self.slot_of_commu.get_mut(usize::from(number) - 1),
+                self.state.get_mut(usize::from(number)),
             ) else {
                 return Err(CopKernel::NoResource);
             };
@@ -390,6 +413,7 @@ impl Srdo {
             };
             count += 1;
             *map = count as u8;
+            *st = 0;
         }
         if count > 0 {
             od.find(CONFIG_VALID_INDEX, 0).map_err(|e| e.kernel)?;
@@ -491,8 +515,12 @@ impl Srdo {
         }
         if !was {
             for s in self.slots.iter_mut() {
-                s.status = 0;
                 s.errors_pending = 0;
+            }
+            for st in self.state.iter_mut() {
+                if *st != status::ABSENT {
+                    *st = 0;
+                }
             }
             self.start(od, node, now);
         }
@@ -610,7 +638,9 @@ impl Srdo {
             return;
         };
         if s.errors_pending == 0 {
-            s.status = error_status(s.status);
+            if let Some(st) = status_of(&mut self.state, s.number) {
+                *st = error_status(*st);
+            }
         }
         s.errors_pending = s.errors_pending.saturating_add(1);
         q.emit(Event::SrdoError(s.commu_index(), code));
@@ -619,16 +649,38 @@ impl Srdo {
 
     #[inline(always)]
     fn report_ok(&mut self, slot: usize, pm: ProgMonEvent, q: &mut ActionQueue) {
-        let Some(s) = self.slots.get_mut(slot) else {
-            return;
-        };
-        s.status &= !status::TRANSFER_MASK;
-        q.emit(Event::SrdoEvent(s.commu_index()));
-        if SRDO_USE_PROGMONITOR {
-            q.emit(Event::ProgMon(pm));
+        if let Some(e) = self.mark_ok(slot) {
+            q.emit(e);
+            Self::progmon(q, pm);
         }
     }
 
+    /// [`Srdo::report_ok`] with an empty queue: returns the success event
+    /// (what the queue would hand out first) and queues the program
+    /// monitor's event after it.
+    #[inline(always)]
+    fn report_ok_first(
+        &mut self,
+        slot: usize,
+        pm: ProgMonEvent,
+        q: &mut ActionQueue,
+    ) -> Option<Event> {
+        let e = self.mark_ok(slot)?;
+        Self::progmon(q, pm);
+        Some(e)
+    }
+
+    /// Status bits 4-5 := 00 (success); the event to report.
+    #[inline(always)]
+    fn mark_ok(&mut self, slot: usize) -> Option<Event> {
+        let s = self.slots.get_mut(slot)?;
+        if let Some(st) = status_of(&mut self.state, s.number) {
+            *st &= !status::TRANSFER_MASK;
+        }
+        Some(Event::SrdoEvent(s.commu_index()))
+    }
+
+    #[inline(always)]
     fn progmon(q: &mut ActionQueue, pm: ProgMonEvent) {
         if SRDO_USE_PROGMONITOR {
             q.emit(Event::ProgMon(pm));
@@ -644,9 +696,12 @@ impl Srdo {
             return;
         };
         s.errors_pending = s.errors_pending.saturating_sub(1);
-        let handled = s.status & status::ERROR_MASK == status::ERROR_HANDLED;
+        let Some(st) = status_of(&mut self.state, s.number) else {
+            return;
+        };
+        let handled = *st & status::ERROR_MASK == status::ERROR_HANDLED;
         if s.errors_pending > 0 {
-            s.status = error_status(s.status);
+            *st = error_status(*st);
         }
         if SRDO_USE_PROGMONITOR {
             q.push_front(Action::Emit(Event::ProgMon(ProgMonEvent::SrdoError)));
@@ -689,8 +744,34 @@ impl Srdo {
     }
 
     /// Offers a received frame; `true` when it was an SRDO or GFC frame.
-    #[inline]
     pub fn on_frame(&mut self, state: NmtState, frame: &RxFrame, q: &mut ActionQueue) -> bool {
+        !matches!(self.take_frame::<false>(state, frame, q), Received::NotSrdo)
+    }
+
+    /// [`Srdo::on_frame`] for a receive loop that offers frames only while
+    /// the queue is empty (the stack's): the success event of a completed
+    /// pair comes back as [`Received::Event`], since the queue would hand
+    /// it out first, instead of going through the queue; everything else
+    /// (errors, the program monitor's event after the success event) is
+    /// queued as by `on_frame`. Inlined into that loop.
+    #[inline(always)]
+    pub fn on_frame_first(
+        &mut self,
+        state: NmtState,
+        frame: &RxFrame,
+        q: &mut ActionQueue,
+    ) -> Received {
+        self.take_frame::<true>(state, frame, q)
+    }
+
+    /// [`Srdo::on_frame`]; with `FIRST` as [`Srdo::on_frame_first`].
+    #[inline(always)]
+    fn take_frame<const FIRST: bool>(
+        &mut self,
+        state: NmtState,
+        frame: &RxFrame,
+        q: &mut ActionQueue,
+    ) -> Received {
         let f = &frame.frame;
         // An id in 0x101..=0x180 is an 11-bit id (an extended id has its
         // flag bit in the raw value); the table holds only the COB-IDs of
@@ -701,25 +782,25 @@ impl Srdo {
             .get(raw.wrapping_sub(u32::from(COB_ID_MIN)) as usize)
         {
             let Some(slot) = entry.checked_sub(1) else {
-                return false;
+                return Received::NotSrdo;
             };
             if f.rtr {
-                return true;
+                return Received::Taken;
             }
             // Odd ids carry the normal data (COB-ID 1), even ids the
             // inverted data.
             if raw & 1 == 1 {
                 self.on_normal(usize::from(slot), frame, q);
-            } else {
-                self.on_inverted(usize::from(slot), frame, q);
+            } else if let Some(e) = self.on_inverted::<FIRST>(usize::from(slot), frame, q) {
+                return Received::Event(e);
             }
-            return true;
+            return Received::Taken;
         }
         if crate::config::SRDO_USE_GFC && wire::is_gfc_id(f) {
             self.on_gfc(f, state, q);
-            return true;
+            return Received::Taken;
         }
-        false
+        Received::NotSrdo
     }
 
     fn on_gfc(&mut self, f: &crate::port::CanFrame, state: NmtState, q: &mut ActionQueue) {
@@ -761,13 +842,16 @@ impl Srdo {
     }
 
     #[inline(always)]
-    fn on_inverted(&mut self, slot: usize, rx: &RxFrame, q: &mut ActionQueue) {
-        let Some(s) = self.slots.get_mut(slot) else {
-            return;
-        };
+    fn on_inverted<const FIRST: bool>(
+        &mut self,
+        slot: usize,
+        rx: &RxFrame,
+        q: &mut ActionQueue,
+    ) -> Option<Event> {
+        let s = self.slots.get_mut(slot)?;
         if s.flags & flag::HOLDING == 0 {
             self.report_error(slot, CopKernel::SrdoNotInOrder, q);
-            return;
+            return None;
         }
         s.flags &= !flag::HOLDING;
         let mask = wire::payload_mask(s.dlc);
@@ -784,7 +868,7 @@ impl Srdo {
             let (first_at, dlc) = (s.held_at, s.dlc);
             if !self.scatter(slot, normal, inverted, dlc) {
                 self.report_error(slot, CopKernel::SrdoErrorMapp, q);
-                return;
+                return None;
             }
             if let Some(s) = self.slots.get_mut(slot) {
                 s.deadline = first_at.plus(s.sct);
@@ -793,10 +877,14 @@ impl Srdo {
                     self.due = s.deadline;
                 }
             }
+            if FIRST {
+                return self.report_ok_first(slot, ProgMonEvent::SrdoReceived, q);
+            }
             self.report_ok(slot, ProgMonEvent::SrdoReceived, q);
-            return;
+            return None;
         };
         self.report_error(slot, code, q);
+        None
     }
 
     // ----------------------------------------------------------------- timers
@@ -1016,11 +1104,11 @@ impl Srdo {
     /// `CcmGetSrdoState`: the status byte; `kCopSrdoNotExist` for an index
     /// that is not an SRDO of this dictionary.
     pub fn get_state(&self, commu_index: u16) -> CopResult<u8> {
-        let slot = self.slot_for(commu_index)?;
-        self.slots
-            .get(slot)
-            .map(|s| s.status)
-            .ok_or(CopKernel::SrdoNotExist)
+        // 0x1300 + n gives n; any other index more than 64 (or 0: absent).
+        match self.state.get(usize::from(commu_index ^ COMMU_BASE)) {
+            Some(&st) if st != status::ABSENT => Ok(st),
+            _ => Err(CopKernel::SrdoNotExist),
+        }
     }
 
     /// `CcmSetSrdoState`: sets bits 4-7 of the status byte; the reserved
@@ -1034,19 +1122,21 @@ impl Srdo {
     }
 
     /// The status byte of an SRDO of this dictionary, `None` for any other
-    /// index: one table look-up and one bounds check (the C API's
-    /// `CcmGetSrdoState` / `CcmSetSrdoState`, called twice per received
-    /// SRDO from `AppSrdoEvent`).
+    /// index: one table look-up and one bounds check.
     #[inline(always)]
     pub fn status_mut(&mut self, commu_index: u16) -> Option<&mut u8> {
-        // Below 0x1301 the difference wraps far beyond the table; slot
-        // entry 0 (no such SRDO) wraps to usize::MAX, beyond the slots.
-        let s = *self
-            .slot_of_commu
-            .get(usize::from(commu_index.wrapping_sub(COMMU_FIRST)))?;
-        self.slots
-            .get_mut(usize::from(s).wrapping_sub(1))
-            .map(|s| &mut s.status)
+        // 0x1300 + n gives n; any other index more than 64 (or 0: absent).
+        self.state
+            .get_mut(usize::from(commu_index ^ COMMU_BASE))
+            .filter(|st| **st != status::ABSENT)
+    }
+
+    /// The table of status bytes (SRDO n at offset n, [`status::ABSENT`]
+    /// at 0 and for a number without SRDO), for the C API's `CcmGetSrdoState` /
+    /// `CcmSetSrdoState`, which reach a byte through it while the stack is
+    /// not borrowed (`src/ffi/global.rs` says when the pointer is valid).
+    pub fn status_table(&mut self) -> *mut [u8; MAX_SRDO_NUMBER + 1] {
+        &mut self.state
     }
 
     /// `SrdoGetCommuParam`: direction and refresh time / SCT as they are in
