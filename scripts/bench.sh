@@ -22,9 +22,12 @@
 #   App* callbacks); its measured regions are C functions `measure_*`.
 # * Code sizes: scripts/tms570.sh builds and links the TMS570 image in
 #   four variants (ARM / Thumb-2 x opt-level s / z);
-#   scripts/tms570/code_size.py attributes the code to source files.
+#   scripts/tms570/code_size.py attributes the code to source files and
+#   functions; `scripts/tms570.sh sizes` links the safety demo and the I/O
+#   node example and gives their .text.
 # * RAM: bench/target-sizes exports `size_of` of the stack's types for the
-#   target as symbol sizes, read with arm-none-eabi-nm.
+#   target as symbol sizes, read with arm-none-eabi-nm; the field layout of
+#   the per-SRDO types is rustc's (-Zprint-type-sizes, scripts/type_layout.py).
 set -euo pipefail
 shopt -s inherit_errexit
 cd "$(dirname "$0")/.."
@@ -200,7 +203,8 @@ for v in arm-s arm-z thumb-s thumb-z; do
     TMS570_VARIANT=$v TMS570_OPT_LEVEL=${v#*-} TMS570_THUMB=$thumb CARGO_TARGET_DIR=$OUT \
         scripts/tms570.sh >"$WORK/tms570-$v.log" || { cat "$WORK/tms570-$v.log" >&2; die "tms570.sh ($v)"; }
     elf=$(awk '/^linked: / {print $2}' "$WORK/tms570-$v.log")
-    python3 scripts/tms570/code_size.py "$elf" --files >"$WORK/size-$v.txt" || die "code_size.py ($v)"
+    python3 scripts/tms570/code_size.py "$elf" --files --functions 10 >"$WORK/size-$v.txt" ||
+        die "code_size.py ($v)"
     CODE[$v]=$(awk -F= '/^srdo_total=/ {print $2}' "$WORK/size-$v.txt")
     TEXT[$v]=$(awk -F= '/^text=/ {print $2}' "$WORK/size-$v.txt")
     DATA[$v]=$(awk -F= '/^data=/ {print $2}' "$WORK/size-$v.txt")
@@ -211,6 +215,14 @@ TMS570_VARIANT=arm-s-srdo8 TMS570_OPT_LEVEL=s COP_SRDO_MAX_SRDO_IN_OBD=8 CARGO_T
     scripts/tms570.sh >"$WORK/tms570-srdo8.log" || { cat "$WORK/tms570-srdo8.log" >&2; die "tms570.sh (8 SRDOs)"; }
 ELF8=$(awk '/^linked: / {print $2}' "$WORK/tms570-srdo8.log")
 read -r _ DATA8 BSS8 _ < <(arm-none-eabi-size "$ELF8" | awk 'NR == 2')
+log "TMS570 safety node and I/O node (scripts/tms570.sh sizes)"
+CARGO_TARGET_DIR=$OUT scripts/tms570.sh sizes >"$WORK/tms570-nodes.log" ||
+    { cat "$WORK/tms570-nodes.log" >&2; die "tms570.sh sizes"; }
+# "target-size: safety node .text T bytes (libcop.a L), I/O node .text T bytes (libcop.a L); ..."
+read -r TEXT_SAFETY LIB_SAFETY TEXT_IO LIB_IO < <(sed -n \
+    's|^target-size: safety node \.text \([0-9]*\) bytes (libcop\.a \([0-9]*\)), I/O node \.text \([0-9]*\) bytes (libcop\.a \([0-9]*\)).*|\1 \2 \3 \4|p' \
+    "$WORK/tms570-nodes.log") || true
+[ -n "${LIB_IO:-}" ] || { cat "$WORK/tms570-nodes.log" >&2; die "no target-size line from tms570.sh sizes"; }
 
 # ------------------------------------------------------------------- RAM
 declare -A SIZE
@@ -238,10 +250,27 @@ for line in sys.stdin:
 for cap in 1 8 64; do
     target_sizes "$cap" "$cap"
 done
+# Field layout of the per-SRDO types at capacity 64, as rustc lays them out
+# for the target (the leaf crate is rebuilt so that rustc prints it).
+log "target field layout of the per-SRDO types (-Zprint-type-sizes)"
+(cd bench/target-sizes && cargo clean -q --release --target armebv7r-none-eabihf -p cop-target-sizes \
+    --target-dir "$OUT/bench-target-sizes" >&2 && COP_SRDO_MAX_SRDO_IN_OBD=64 RUSTC_BOOTSTRAP=1 \
+    CARGO_TARGET_DIR="$OUT/bench-target-sizes" RUSTFLAGS="-C target-cpu=cortex-r4f" \
+    cargo rustc -q --release -Zbuild-std=core --target armebv7r-none-eabihf --lib -- -Zprint-type-sizes \
+    >"$WORK/type-sizes.txt") || die "target-sizes build (-Zprint-type-sizes)"
+python3 scripts/type_layout.py "$WORK/type-sizes.txt" cop::srdo::Slot cop::srdo::plan::Plan \
+    cop::srdo::plan::General >"$WORK/srdo-layout.txt" || die "type_layout.py"
+type_size() { awk -F'\t' -v t="$1" '$1 == t && $2 == "(size)" {print $4}' "$WORK/srdo-layout.txt"; }
+SLOT_BYTES=$(type_size cop::srdo::Slot)
+PLAN_BYTES=$(type_size cop::srdo::plan::Plan)
 target_sizes static1 1 --features cop/srdo-static-mapping
 target_sizes static64 64 --features cop/srdo-static-mapping
 # Per SRDO: what one more SRDO of capacity adds (slot + copy plan).
 PER_SRDO=$(awk -v a="${SIZE[1,SRDO]}" -v b="${SIZE[64,SRDO]}" 'BEGIN {printf "%.1f\n", (b - a) / 63}')
+# What the per-SRDO figure holds beyond one Slot and one Plan (the Srdo's
+# own alignment padding spread over 63 SRDOs, or a per-SRDO array that the
+# layout table does not list).
+PER_SRDO_REST=$(awk -v p="$PER_SRDO" -v s="$SLOT_BYTES" -v q="$PLAN_BYTES" 'BEGIN {printf "%.1f\n", p - s - q}')
 SRDO_FIXED=$(awk -v s="${SIZE[1,SRDO]}" -v p="$PER_SRDO" 'BEGIN {printf "%.0f\n", s - p}')
 PER_SRDO_STATIC=$(awk -v a="${SIZE[static1,SRDO]}" -v b="${SIZE[static64,SRDO]}" 'BEGIN {printf "%.1f\n", (b - a) / 63}')
 PER_SRDO_AT8=$(awk -v s="${SIZE[8,SRDO]}" 'BEGIN {printf "%.1f\n", s / 8}')
@@ -254,8 +283,7 @@ COMMIT=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 DIRTY=$(git status --porcelain --untracked-files=no 2>/dev/null | grep -q . && echo " (with uncommitted changes)" || true)
 
 # The figures as one JSON object: in $WORK/figures.json after every run,
-# on stdout instead of the report with --json. text_safety_node and
-# text_io_node are not measured by this script (null).
+# on stdout instead of the report with --json.
 {
     printf '{"capi_srdo_pair_pm_on": %s, "capi_srdo_pair_pm_off": %s, "capi_srdo_pair_pm_on_64": %s, ' \
         "${CRX[on,1]}" "${CRX[off,1]}" "${CRX[on,64]}"
@@ -263,7 +291,8 @@ DIRTY=$(git status --porcelain --untracked-files=no 2>/dev/null | grep -q . && e
         "$CHANDSHAKE" "${CIDLE[off,8]}" "$CSEND"
     printf '"rust_srdo_pair_pm_on": %s, "rust_srdo_pair_pm_off": %s, ' "${RX[on,1]}" "${RX[off,1]}"
     printf '"code_srdo_gfc_crc_arm_z": %s, "code_srdo_gfc_crc_thumb_z": %s, ' "${CODE[arm-z]}" "${CODE[thumb-z]}"
-    printf '"text_safety_node": null, "text_io_node": null, "ram_per_srdo_dynamic": %s}\n' "$PER_SRDO"
+    printf '"text_safety_node": %s, "text_io_node": %s, "ram_per_srdo_dynamic": %s}\n' \
+        "$TEXT_SAFETY" "$TEXT_IO" "$PER_SRDO"
 } >"$WORK/figures.json"
 if [ $JSON = 1 ]; then
     cat "$WORK/figures.json"
@@ -302,7 +331,9 @@ not times); sizes and RAM are those of the TMS570 build
 | \`DynBuildOd\` of a 1.5 KB container | ≤ 200,000, linear in entries | $(fmt "$DYN_FULL") ($(fmt "$DYN_BYTES") B, $DYN_ENTRIES entries); $DYN_BYTES_HALF B, $DYN_ENTRIES_HALF entries: $(fmt "$DYN_HALF"); ratio $DYN_RATIO for twice the entries | $(verdict "$DYN_FULL" 200000); $DYN_LINEAR |
 | code size SRDO+GFC+CRC, ARM (opt-level z / s) | ≤ 6,000 B | $(fmt "${CODE[arm-z]}") / $(fmt "${CODE[arm-s]}") B | $(verdict "${CODE[arm-z]}" 6000) / $(verdict "${CODE[arm-s]}" 6000) |
 | code size SRDO+GFC+CRC, Thumb-2 (opt-level z / s) | ≤ 4,000 B | $(fmt "${CODE[thumb-z]}") / $(fmt "${CODE[thumb-s]}") B | $(verdict "${CODE[thumb-z]}" 4000) / $(verdict "${CODE[thumb-s]}" 4000) |
-| RAM per SRDO (dynamic mapping, the default) | ≤ 64 B | $(fmt "$PER_SRDO") B (+ $SRDO_FIXED B per node; $(fmt "$PER_SRDO_AT8") B per SRDO at 8 SRDOs) | $(verdict "$PER_SRDO" 64) |
+| \`.text\` of a complete safety node (safety demo, TMS570, ARM, opt-level of Cargo.toml) | report | $(fmt "$TEXT_SAFETY") B (libcop.a $(fmt "$LIB_SAFETY") B) | reported |
+| \`.text\` of an I/O node (examples_c/io_node, TMS570, ARM) | report | $(fmt "$TEXT_IO") B (libcop.a $(fmt "$LIB_IO") B) | reported |
+| RAM per SRDO (dynamic mapping, the default) | ≤ 64 B | $(fmt "$PER_SRDO") B: \`Slot\` $SLOT_BYTES + \`Plan\` $PLAN_BYTES (+ $SRDO_FIXED B per node; $(fmt "$PER_SRDO_AT8") B per SRDO at 8 SRDOs) | $(verdict "$PER_SRDO" 64) |
 | RAM per SRDO, static mapping (\`srdo-static-mapping\`) | ≤ 64 B | $(fmt "$PER_SRDO_STATIC") B | $(verdict "$PER_SRDO_STATIC" 64) |
 | RAM of the whole stack with 8 SRDOs | report | $(fmt "${SIZE[8,STACK]}") B (\`Stack\`); C API instance $(fmt "${SIZE[8,INSTANCE]}") B; image .data + .bss $(fmt "$DATA8") + $(fmt "$BSS8") B | reported |
 
@@ -372,6 +403,12 @@ not times); sizes and RAM are those of the TMS570 build
   other functions (\`Stack::poll\`); inlined core-library code counts for the
   file it was inlined into. Plus the named SRDO constants (the 512-byte CRC
   table). scripts/tms570/code_size.py documents the rule.
+* **\`.text\` of a node**: \`scripts/tms570.sh sizes\`: the safety demo
+  (examples_c/safety_demo: the safety nodes' application, its dictionaries,
+  SRDO/GFC, the simulated driver and the C library) and the I/O node
+  example (examples_c/io_node), each linked for the TMS570 with its own
+  libcop.a built from its copcfg.h / obdcfg.h; the whole \`.text\` of the
+  image, and in brackets the part the link map assigns to libcop.a.
 * **RAM per SRDO**: (\`size_of::<Srdo>()\` at capacity 64 − at capacity 1) / 63
   on the target: the run-time slot of one SRDO and its copy plan (dynamic
   mapping: a reference to each mapped subindex, its element and length;
@@ -402,6 +439,30 @@ cat <<EOF
 Default capacities (64 SRDOs, 8 + 8 PDOs). The stack instance lies in .bss
 (zeroed at start-up; no flash image of it).
 
+## Where the SRDO+GFC+CRC code is (opt-level z, largest functions)
+
+The ten functions of the image holding the most SRDO+GFC+CRC bytes (the
+attribution above, per function symbol; after LTO a function holds code of
+several source files, so its size can exceed its SRDO part).
+
+EOF
+functions_table() { # $1 = variant
+    echo "| function | SRDO+GFC+CRC bytes in it | function size |"
+    echo "|---|---|---|"
+    awk '/^function / {n = $2; f = $3; $1 = $2 = $3 = ""; sub(/^ +/, ""); printf "%s\t%s\t%s\n", $0, n, f}' \
+        "$WORK/size-$1.txt" | while IFS=$'\t' read -r name n f; do
+        echo "| \`${name//|/\\|}\` | $(fmt "$n") | $(fmt "$f") |"
+    done
+}
+echo "ARM (of $(fmt "${CODE[arm-z]}") B):"
+echo
+functions_table arm-z
+echo
+echo "Thumb-2 (of $(fmt "${CODE[thumb-z]}") B):"
+echo
+functions_table thumb-z
+cat <<EOF
+
 ## RAM of the stack on the target (\`size_of\`, bytes)
 
 | type | 1 SRDO | 8 SRDOs | 64 SRDOs |
@@ -414,6 +475,24 @@ for t in STACK:Stack SRDO:Srdo PDO:Pdo SDO_SERVER:SdoServer SDO_CLIENT:SdoClient
     echo "| ${t#*:} | $(fmt "${SIZE[1,$k]}") | $(fmt "${SIZE[8,$k]}") | $(fmt "${SIZE[64,$k]}") |"
 done
 cat <<EOF
+
+## RAM per SRDO with dynamic mapping: where the bytes go
+
+Each SRDO of capacity has one \`Slot\` (run-time state) and one \`Plan\`
+(copy plan) in \`Srdo\`; field layout as rustc lays it out for the target
+(\`-Zprint-type-sizes\`, capacity 64, offsets in bytes). \`Plan\` is an enum
+whose larger variant \`General\` is its whole size (no separate tag: the
+never-null references carry the variant).
+
+| type | field | offset | bytes |
+|---|---|---|---|
+EOF
+awk -F'\t' '$2 != "(size)" {printf "| `%s` | %s | %s | %s |\n", $1, $2, $3, $4}
+    $2 == "(size)" {printf "| `%s` | **size** | | **%s** |\n", $1, $4}' "$WORK/srdo-layout.txt" |
+    sed 's/`cop::srdo::plan::/`/; s/`cop::srdo::/`/'
+cat <<EOF
+| per SRDO | \`Slot\` + \`Plan\` | | $((SLOT_BYTES + PLAN_BYTES)) |
+| per SRDO | rest of the measured $(fmt "$PER_SRDO") B, outside \`Slot\` and \`Plan\` | | $(fmt "$PER_SRDO_REST") |
 
 ## All instruction counts (per call)
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Code size of the SRDO, GFC and CRC modules in a linked TMS570 image.
 
-usage: code_size.py <image.elf> [--files]
+usage: code_size.py <image.elf> [--files] [--functions N]
 
 After link-time optimisation most SRDO code is inlined into a few large
 functions (`Stack::poll` holds the frame dispatch of every module), so the
@@ -26,7 +26,9 @@ counted. The whole image (`arm-none-eabi-size`: text, data, bss) is printed
 as well, so the share of the modules can be judged.
 
 Output: `key=value` lines (srdo_code, srdo_rodata, srdo_total, text, data,
-bss); `--files` adds the bytes per source file.
+bss); `--files` adds the bytes per source file; `--functions N` adds the N
+functions holding the most SRDO+GFC+CRC bytes (`function <SRDO+GFC+CRC
+bytes> <function size> <name>`), largest first.
 """
 
 import re
@@ -117,9 +119,10 @@ def main():
     funcs = functions(elf)
     rows = line_rows(elf)
     per_file = defaultdict(int)
+    per_function = []
     safety = 0
     r = 0
-    for start, end, _name in funcs:
+    for start, end, name in funcs:
         # Rows that fall into this function, as (from, to, path).
         while r < len(rows) and rows[r][0] < start:
             r += 1
@@ -139,6 +142,7 @@ def main():
         spans.append((pos, end, current))
         first_crate = next((p for _, _, p in spans if p and not is_core(p)), None)
         owner = first_crate
+        in_function = 0
         for a, b, p in spans:
             if p and not is_core(p):
                 owner = p
@@ -146,6 +150,9 @@ def main():
             per_file[who] += b - a
             if who and is_safety(who):
                 safety += b - a
+                in_function += b - a
+        if in_function:
+            per_function.append((in_function, end - start, name))
     ro, ro_names = rodata(elf)
     text, data, bss = image_sizes(elf)
     print(f"srdo_code={safety}")
@@ -160,6 +167,11 @@ def main():
             print(f"file {mark} {n:7d} {path}")
         for name, n in ro_names:
             print(f"rodata * {n:7d} {name}")
+    if "--functions" in sys.argv:
+        i = sys.argv.index("--functions")
+        top = int(sys.argv[i + 1]) if i + 1 < len(sys.argv) else 10
+        for n, size, name in sorted(per_function, key=lambda x: (-x[0], x[2]))[:top]:
+            print(f"function {n:7d} {size:7d} {name}")
     return 0
 
 
