@@ -257,8 +257,10 @@ impl Stack {
         &self.od
     }
 
-    /// Mutable access to the dictionary (dynamic OD).
+    /// Mutable access to the dictionary (dynamic OD). What the PDOs
+    /// resolved in it is resolved again.
     pub fn od_mut(&mut self) -> &mut ObjectDictionary {
+        self.pdo.dictionary_changed();
         &mut self.od
     }
 
@@ -727,6 +729,7 @@ impl Stack {
         self.dynamic = None;
         // The previous user part passed the checks once already.
         let _ = self.od.set_user_part(original_user);
+        self.pdo.dictionary_changed();
         self.od.restore_defaults(0x1400, 0x1BFF);
         self.sdo.cancel();
         self.reconfigure_modules(port, now);
