@@ -61,8 +61,9 @@ enum State {
 pub(crate) struct Watch {
     state: State,
     count: u8,
-    pieces: [Option<Piece>; PIECES],
-    raw: [u8; RAW],
+    pieces: [Piece; PIECES],
+    /// The bytes of the pieces in order, byte k in bits 8k..8k+7.
+    raw: u64,
     payload: Payload,
 }
 
@@ -72,8 +73,8 @@ impl Watch {
         Watch {
             state: State::Unresolved,
             count: 0,
-            pieces: [None; PIECES],
-            raw: [0; RAW],
+            pieces: [Piece::Ram(&[]); PIECES],
+            raw: 0,
             payload: Payload {
                 data: [0; 8],
                 len: 0,
@@ -96,8 +97,11 @@ impl Watch {
         if self.state != State::Taken {
             return None;
         }
-        let mut at = 0usize;
-        for piece in self.pieces.iter().take(usize::from(self.count)).flatten() {
+        // The bytes now, packed as `raw` is (resolution made sure they
+        // fit).
+        let mut now = 0u64;
+        let mut shift = 0u32;
+        for piece in self.pieces.get(..usize::from(self.count))? {
             let mem = match *piece {
                 Piece::Ram(m) => m,
                 Piece::Var(v, len) => match v.data() {
@@ -105,17 +109,12 @@ impl Watch {
                     _ => return None,
                 },
             };
-            let was = self.raw.get(at..at + mem.len())?;
-            if mem
-                .iter()
-                .zip(was)
-                .any(|(m, w)| m.load(Ordering::Relaxed) != *w)
-            {
-                return None;
+            for m in mem {
+                now |= u64::from(m.load(Ordering::Relaxed)).checked_shl(shift)?;
+                shift += 8;
             }
-            at += mem.len();
         }
-        Some(self.payload)
+        (now == self.raw).then_some(self.payload)
     }
 
     /// Resolves the mapping if needed and takes the bytes of the pieces,
@@ -130,13 +129,9 @@ impl Watch {
             return false;
         }
         self.state = State::Resolved;
+        let mut raw = [0u8; RAW];
         let mut at = 0usize;
-        for piece in self
-            .pieces
-            .iter_mut()
-            .take(usize::from(self.count))
-            .flatten()
-        {
+        for piece in self.pieces.iter_mut().take(usize::from(self.count)) {
             let mem = match piece {
                 Piece::Ram(m) => *m,
                 Piece::Var(v, len) => {
@@ -150,12 +145,14 @@ impl Watch {
                     m
                 }
             };
-            let Some(dst) = self.raw.get_mut(at..at + mem.len()) else {
+            let Some(dst) = raw.get_mut(at..at + mem.len()) else {
                 return false;
             };
             crate::od::value::load(mem, dst);
             at += mem.len();
         }
+        // Byte k of the pieces in bits 8k.. as `unchanged` packs them.
+        self.raw = u64::from_le_bytes(raw);
         self.state = State::Ready;
         true
     }
@@ -197,7 +194,7 @@ impl Watch {
             if bytes > RAW {
                 return;
             }
-            *slot = Some(piece);
+            *slot = piece;
             self.count += 1;
         }
         self.state = State::Resolved;
