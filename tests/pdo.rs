@@ -936,6 +936,18 @@ fn poke_input(net: &Net, sub: u8, v: u8) {
     }
 }
 
+/// Both nodes OPERATIONAL for 3 ms (the first comparison has taken the
+/// data as they are); `None` without `CCM_USE_PDO_CHECK_VAR`.
+fn check_var_net() -> Option<Net> {
+    if !cop::config::CCM_USE_PDO_CHECK_VAR {
+        return None;
+    }
+    let mut net = Net::new();
+    net.start();
+    net.run(3);
+    Some(net)
+}
+
 /// `CCM_USE_PDO_CHECK_VAR` (SYS TEC copdef.h default TRUE; pdo.h
 /// `PdoProcessCheckVar`): an event-driven TPDO is sent in the cycle after
 /// its mapped variable changed in memory, once per change, with the new
@@ -943,12 +955,9 @@ fn poke_input(net: &Net, sub: u8, v: u8) {
 /// second and third of the same variable and one back to an earlier value.
 #[test]
 fn check_var_sends_each_change_of_a_mapped_variable() {
-    if !cop::config::CCM_USE_PDO_CHECK_VAR {
+    let Some(mut net) = check_var_net() else {
         return;
-    }
-    let mut net = Net::new();
-    net.start();
-    net.run(3);
+    };
     assert!(
         net.frames(0x181).is_empty(),
         "nothing changed, nothing sent"
@@ -971,12 +980,9 @@ fn check_var_sends_each_change_of_a_mapped_variable() {
 /// is sent, a change of a variable mapped before is not.
 #[test]
 fn check_var_follows_a_remapped_tpdo() {
-    if !cop::config::CCM_USE_PDO_CHECK_VAR {
+    let Some(mut net) = check_var_net() else {
         return;
-    }
-    let mut net = Net::new();
-    net.start();
-    net.run(3);
+    };
     poke_input(&net, 1, 0x33);
     net.step();
     assert_eq!(net.frames(0x181).len(), 1, "the old mapping is watched");
