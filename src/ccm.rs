@@ -257,8 +257,10 @@ impl Stack {
         &self.od
     }
 
-    /// Mutable access to the dictionary (dynamic OD).
+    /// Mutable access to the dictionary (dynamic OD). What the PDOs
+    /// resolved in it is resolved again.
     pub fn od_mut(&mut self) -> &mut ObjectDictionary {
+        self.pdo.dictionary_changed();
         &mut self.od
     }
 
@@ -474,8 +476,10 @@ impl Stack {
     }
 
     /// Phase `Receive`: frame after frame while they queue nothing. Returns
-    /// the first event a frame queued; `None` with the phase `SrdoTimers`
-    /// when the driver has no frame left, or with internal work queued.
+    /// the first event a frame queued; `None` with the next timer phase
+    /// (`SrdoTimers`, or `PdoTimers` when the SRDOs and the SYNC producer
+    /// are at rest) when the driver has no frame left, or with internal
+    /// work queued.
     #[inline(always)]
     fn receive_frames(&mut self, port: &mut impl CanPort, now: Ticks) -> Option<Event> {
         while let Some(f) = port.receive() {
@@ -489,7 +493,13 @@ impl Stack {
                 return None;
             }
         }
-        self.phase = Phase::SrdoTimers;
+        // Phases with nothing to do at `now` are skipped (see
+        // `early_at_rest`).
+        self.phase = if self.early_at_rest(now) {
+            Phase::PdoTimers
+        } else {
+            Phase::SrdoTimers
+        };
         None
     }
 
@@ -525,7 +535,11 @@ impl Stack {
                 Phase::PdoTimers => {
                     let (od, q, emcy) = (&self.od, &mut self.queue, &mut self.emcy);
                     if self.pdo.poll(od, self.state, port, now, q, emcy) {
-                        self.phase = Phase::HbcTimers;
+                        self.phase = if self.late_at_rest(now) {
+                            Phase::Idle
+                        } else {
+                            Phase::HbcTimers
+                        };
                     }
                 }
                 Phase::HbcTimers => {
@@ -575,6 +589,36 @@ impl Stack {
             self.phase = saved;
         }
         e
+    }
+
+    /// The SRDO timers and the SYNC producer would do nothing at `now`, so
+    /// their phases can be left out of this cycle. Each module answers
+    /// from its current state with the conditions of its own `poll`, so a
+    /// deadline is acted upon at the same tick as without the skip, and
+    /// whatever changed a module since its last pass (an API call, a
+    /// frame, an event handled) is taken into account.
+    #[inline]
+    fn early_at_rest(&self, now: Ticks) -> bool {
+        self.srdo.at_rest(self.state, now) && self.syncp.at_rest(self.operating(), now)
+    }
+
+    /// The phases after the PDOs would do nothing at `now` (the heartbeat
+    /// consumer, the NMT master's node guarding, the SDO client and
+    /// server, the heartbeat producer, life guarding, the EMCY producer;
+    /// the conditions of [`Stack::timers`] and of each `poll`), so the
+    /// cycle can end after the PDOs. Evaluated when the PDO phase is
+    /// done, so that what the application did in the callbacks of this
+    /// cycle counts.
+    #[inline]
+    fn late_at_rest(&self, now: Ticks) -> bool {
+        let supervising = self.connected;
+        let beating = self.connected && self.state != NmtState::Initialisation;
+        (!supervising || (self.hbc.at_rest(now) && self.nmtm.at_rest(now)))
+            && self.sdoc.at_rest()
+            && self.sdo.at_rest()
+            && (!beating || self.hb.at_rest(now))
+            && (!supervising || self.lgs.at_rest(now, self.hb.period_ms() > 0))
+            && self.emcy.at_rest(now)
     }
 
     #[inline(never)] // its frame stays out of poll_work (worst-case stack, docs/tms570.md)
@@ -795,6 +839,7 @@ impl Stack {
         self.dynamic = None;
         // The previous user part passed the checks once already.
         let _ = self.od.set_user_part(original_user);
+        self.pdo.dictionary_changed();
         self.od.restore_defaults(0x1400, 0x1BFF);
         self.sdo.cancel();
         self.reconfigure_modules(port, now);

@@ -1012,3 +1012,34 @@ fn a_power_cut_during_a_save_keeps_the_old_parameters() {
         old_c + new_c
     );
 }
+
+// ---------------------------------------------------------------------------
+// Idle cycles
+// ---------------------------------------------------------------------------
+
+/// Cycles in which nothing is due leave the timer phases out, but each
+/// deadline is still acted upon in the cycle of its tick: with one cycle
+/// per tick (100 µs) and nothing else happening, the heartbeat (producer
+/// time 3 ms, CiA 301 §7.2.8.3.2.2: one heartbeat per producer time) and
+/// the SYNC producer (communication cycle period 2,300 µs, 0x1006, CiA 301
+/// §7.5.2.6) send at exactly every period from the configuration on.
+#[test]
+fn idle_cycles_act_on_each_deadline_at_its_tick() {
+    let mut net = Net::new();
+    let start = net.a.now().0;
+    net.a.stack.config_hbp(3, net.a.now()).unwrap();
+    net.a
+        .stack
+        .config_sync_producer(0x4000_0080, 2_300, net.a.now())
+        .unwrap();
+    net.bus.clear_trace();
+    for _ in 0..200 {
+        net.bus.advance_ticks(1);
+        net.step();
+    }
+    let times = |id: u32| -> Vec<u32> { net.frames(id).into_iter().map(|f| f.0).collect() };
+    let heartbeats: Vec<u32> = (1..=6).map(|k| start + 30 * k).collect();
+    assert_eq!(times(0x700 + u32::from(ID_A)), heartbeats);
+    let syncs: Vec<u32> = (1..=8).map(|k| start + 23 * k).collect();
+    assert_eq!(times(0x80), syncs);
+}

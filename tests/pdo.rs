@@ -924,3 +924,83 @@ fn pdos_defined_in_the_reset_communication_callback() {
     assert_eq!(outputs(&net.b), (3, 4, 5));
     assert_eq!(net.b.pdo_events(), vec![0x1400]);
 }
+
+/// Stores `v` into the RAM of a mapped variable of node A directly, as an
+/// application (or an interrupt) writing its variable does: no dictionary
+/// write, no signal.
+fn poke_input(net: &Net, sub: u8, v: u8) {
+    let obj = net.a.stack.od().find(0x2000, sub).unwrap();
+    match obj.storage().unwrap() {
+        cop::od::Storage::Ram(m) => m[0].store(v, core::sync::atomic::Ordering::Relaxed),
+        _ => unreachable!("0x2000 is RAM"),
+    }
+}
+
+/// Both nodes OPERATIONAL for 3 ms (the first comparison has taken the
+/// data as they are); `None` without `CCM_USE_PDO_CHECK_VAR`.
+fn check_var_net() -> Option<Net> {
+    if !cop::config::CCM_USE_PDO_CHECK_VAR {
+        return None;
+    }
+    let mut net = Net::new();
+    net.start();
+    net.run(3);
+    Some(net)
+}
+
+/// `CCM_USE_PDO_CHECK_VAR` (SYS TEC copdef.h default TRUE; pdo.h
+/// `PdoProcessCheckVar`): an event-driven TPDO is sent in the cycle after
+/// its mapped variable changed in memory, once per change, with the new
+/// value, without `CcmSignalCheckVar`. Every change is seen, also the
+/// second and third of the same variable and one back to an earlier value.
+#[test]
+fn check_var_sends_each_change_of_a_mapped_variable() {
+    let Some(mut net) = check_var_net() else {
+        return;
+    };
+    assert!(
+        net.frames(0x181).is_empty(),
+        "nothing changed, nothing sent"
+    );
+    for (n, v) in [0x11u8, 0x22, 0x11].into_iter().enumerate() {
+        poke_input(&net, 1, v);
+        let at = net.bus.now().0;
+        net.step();
+        let f = net.frames(0x181);
+        assert_eq!(f.len(), n + 1, "change {n} sent in the next cycle");
+        assert_eq!(f[n], (at, vec![v, 0, 0, 0, 0, 0, 0]));
+        net.run(3);
+        assert_eq!(net.frames(0x181).len(), n + 1, "once per change");
+    }
+}
+
+/// A TPDO remapped in OPERATIONAL (CiA 301 §7.5.2.38 procedure: invalidate,
+/// sub 0 = 0, entry, sub 0 = 1, validate) is compared by its new mapping:
+/// a change of the newly mapped variable (0x2000 sub 9, not mapped before)
+/// is sent, a change of a variable mapped before is not.
+#[test]
+fn check_var_follows_a_remapped_tpdo() {
+    let Some(mut net) = check_var_net() else {
+        return;
+    };
+    poke_input(&net, 1, 0x33);
+    net.step();
+    assert_eq!(net.frames(0x181).len(), 1, "the old mapping is watched");
+    let a = &mut net.a;
+    a.write(0x1800, 1, 0x8000_0181, 4).unwrap();
+    a.write(0x1A00, 0, 0, 1).unwrap();
+    a.write(0x1A00, 1, 0x2000_0908, 4).unwrap();
+    a.write(0x1A00, 0, 1, 1).unwrap();
+    a.write(0x1800, 1, 0x181, 4).unwrap();
+    net.run(3);
+    assert_eq!(net.frames(0x181).len(), 1, "remapping sends nothing");
+    poke_input(&net, 1, 0x44);
+    net.run(3);
+    assert_eq!(net.frames(0x181).len(), 1, "sub 1 is no longer mapped");
+    poke_input(&net, 9, 0x55);
+    let at = net.bus.now().0;
+    net.step();
+    let f = net.frames(0x181);
+    assert_eq!(f.len(), 2, "the newly mapped sub 9 is watched");
+    assert_eq!(f[1], (at, vec![0x55]));
+}

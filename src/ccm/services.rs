@@ -20,7 +20,7 @@ use crate::wire::pdo::{COB_INVALID, COB_NO_RTR};
 use crate::wire::time::{self, TimeOfDay};
 
 impl Stack {
-    fn operating(&self) -> bool {
+    pub(super) fn operating(&self) -> bool {
         self.connected && matches!(self.state, NmtState::PreOperational | NmtState::Operational)
     }
 

@@ -122,6 +122,12 @@ impl EmcyProducer {
         Ok(())
     }
 
+    /// True when [`EmcyProducer::poll`] at `now` would do nothing.
+    #[inline]
+    pub fn at_rest(&self, now: Ticks) -> bool {
+        self.pending.first().copied().flatten().is_none() || self.inhibited(now)
+    }
+
     /// Sends the oldest queued emergency once the inhibit time has passed.
     pub fn poll(&mut self, port: &mut impl CanPort, now: Ticks) {
         if self.inhibited(now) {

@@ -117,6 +117,14 @@ impl HeartbeatConsumer {
         }
     }
 
+    /// True when [`HeartbeatConsumer::poll`] at `now` would do nothing.
+    #[inline]
+    pub fn at_rest(&self, now: Ticks) -> bool {
+        !self.entries.iter().any(|e| {
+            e.time_ms > 0 && e.supervision == Supervision::Active && now.is_after(e.deadline)
+        })
+    }
+
     /// Checks the deadlines; reports at most one lost node per call (the
     /// stack calls again while events are pending). Returns `true` when no
     /// node was reported.

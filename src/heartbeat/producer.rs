@@ -61,6 +61,12 @@ impl HeartbeatProducer {
         };
     }
 
+    /// True when [`HeartbeatProducer::poll`] at `now` would do nothing.
+    #[inline]
+    pub fn at_rest(&self, now: Ticks) -> bool {
+        self.next.is_none_or(|due| due.is_after(now))
+    }
+
     /// Sends a heartbeat when one is due.
     pub fn poll(&mut self, port: &mut impl CanPort, node: u8, state: u8, now: Ticks) {
         let Some(due) = self.next else { return };

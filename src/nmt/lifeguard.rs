@@ -145,6 +145,14 @@ impl LifeGuardSlave {
         self.supervision = Supervision::Active;
     }
 
+    /// True when [`LifeGuardSlave::poll`] at `now` (with the same
+    /// `heartbeat`) would do nothing.
+    #[inline]
+    pub fn at_rest(&self, now: Ticks, heartbeat: bool) -> bool {
+        self.supervision != Supervision::Active
+            || !(heartbeat || (self.is_configured() && now.is_after(self.deadline)))
+    }
+
     /// Checks the life time. Returns `true` exactly once per loss: the
     /// caller reports the life guarding event. `heartbeat` is true while
     /// the producer heartbeat time is not 0 (life guarding suspended).

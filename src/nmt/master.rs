@@ -285,6 +285,17 @@ impl NmtMaster {
         false
     }
 
+    /// True when [`NmtMaster::poll`] at `now` would do nothing.
+    #[inline]
+    pub fn at_rest(&self, now: Ticks) -> bool {
+        !self.enabled
+            || self
+                .slaves
+                .iter()
+                .filter(|s| s.node != 0 && s.guard_ms > 0)
+                .all(|s| s.next_guard.is_after(now))
+    }
+
     /// Guarding timers: sends due guard requests and reports a slave that
     /// missed `life factor` answers in a row (once, until it answers).
     /// Returns `true` when nothing was reported.

@@ -74,6 +74,7 @@ pub mod mapping;
 mod param;
 #[cfg(test)]
 mod tests;
+mod watch;
 
 pub use param::{PdoParam, StaticPdoParam};
 
@@ -268,6 +269,8 @@ pub(crate) struct Channel {
     rtr_pending: bool,
     sampled: Option<Payload>,
     last_sent: Option<Payload>,
+    /// `CCM_USE_PDO_CHECK_VAR`: the resolved mapping and its bytes.
+    watch: watch::Watch,
     // RPDO state.
     sync_buffer: Option<Payload>,
     pending: Option<Payload>,
@@ -290,6 +293,7 @@ impl Channel {
             rtr_pending: false,
             sampled: None,
             last_sent: None,
+            watch: watch::Watch::new(),
             sync_buffer: None,
             pending: None,
             deadline: None,
@@ -307,6 +311,7 @@ impl Channel {
         self.rtr_pending = false;
         self.sampled = None;
         self.last_sent = None;
+        self.watch.forget();
         self.sync_buffer = None;
         self.pending = None;
         self.deadline = None;
@@ -318,6 +323,12 @@ impl Channel {
         if tx_type::is_event(self.cfg.tx_type) && self.cfg.event_ms > 0 {
             self.event_deadline = Some(now.plus_ms(u32::from(self.cfg.event_ms)));
         }
+    }
+
+    /// Takes over newly read parameters; the mapping may have changed.
+    fn set_cfg(&mut self, cfg: Config) {
+        self.cfg = cfg;
+        self.watch.forget();
     }
 
     /// The PDO can carry data: valid and with a usable payload definition.
@@ -495,6 +506,7 @@ impl Pdo {
             }
             self.tx.pooled = Some(tx);
         }
+        self.dictionary_changed();
     }
 
     /// Gives the channels of [`Pdo::attach_pooled`] back: the fixed ones
@@ -509,11 +521,21 @@ impl Pdo {
         self.rx.pooled = None;
         self.tx.pooled = None;
         self.cursor = 0;
+        self.dictionary_changed();
     }
 
     /// Whether channels of a dynamic OD's pool are in use.
     pub fn has_pooled(&self) -> bool {
         self.rx.pooled.is_some() || self.tx.pooled.is_some()
+    }
+
+    /// The dictionary was replaced or rebuilt: what the TPDOs' mappings
+    /// resolved to for `CCM_USE_PDO_CHECK_VAR` is resolved again.
+    pub fn dictionary_changed(&mut self) {
+        self.wake();
+        for ch in self.tx.iter_mut() {
+            ch.watch.forget();
+        }
     }
 
     /// Something may have become due: the next [`Pdo::poll`] looks at
@@ -606,11 +628,11 @@ impl Pdo {
             predefined_node_id(od, Direction::Tx, n, node);
         }
         for (n, ch) in self.rx.iter_mut().enumerate() {
-            ch.cfg = load(od, Direction::Rx, n);
+            ch.set_cfg(load(od, Direction::Rx, n));
             ch.reset_runtime();
         }
         for (n, ch) in self.tx.iter_mut().enumerate() {
-            ch.cfg = load(od, Direction::Tx, n);
+            ch.set_cfg(load(od, Direction::Tx, n));
             ch.reset_runtime();
         }
         self.load_sync(od);
@@ -679,7 +701,7 @@ impl Pdo {
         };
         let was = ch.cfg.cob;
         let was_type = ch.cfg.tx_type;
-        ch.cfg = load(od, p.dir, usize::from(p.number));
+        ch.set_cfg(load(od, p.dir, usize::from(p.number)));
         let cob_changed = ch.cfg.cob != was;
         if ch.cfg.cob.is_none() {
             ch.reset_runtime();
@@ -727,6 +749,7 @@ impl Pdo {
                 return Err(CopKernel::PdoLengthExceeded);
             }
             ch.static_data = d;
+            ch.watch.forget();
         }
         Ok(())
     }
@@ -1139,7 +1162,7 @@ impl Pdo {
             if ch.event_pending || !(tx_type::is_event(t) || t == tx_type::SYNC_ACYCLIC) {
                 continue;
             }
-            if let Ok(p) = sample(od, ch) {
+            if let Ok(p) = watched_sample(od, ch) {
                 if ch.last_sent.is_none() && !signalled {
                     ch.last_sent = Some(p);
                 } else if ch.last_sent != Some(p) {
@@ -1335,6 +1358,27 @@ fn sample(od: &ObjectDictionary, ch: &Channel) -> Result<Payload, CopKernel> {
         pos += u16::from(e.bits);
     }
     p.len = bytes_for_bits(pos);
+    Ok(p)
+}
+
+/// [`sample`] for the comparison of `CCM_USE_PDO_CHECK_VAR`: without
+/// sampling while the watched bytes are unchanged.
+#[inline]
+fn watched_sample(od: &ObjectDictionary, ch: &mut Channel) -> Result<Payload, CopKernel> {
+    if let Some(p) = ch.watch.unchanged() {
+        return Ok(p);
+    }
+    if ch.static_data.is_some() {
+        return sample(od, ch);
+    }
+    let count = ch.cfg.count;
+    let watched = ch
+        .watch
+        .take_bytes(od, ch.cfg.entries.get(..count).unwrap_or(&[]));
+    let p = sample(od, ch)?;
+    if watched {
+        ch.watch.take(p);
+    }
     Ok(p)
 }
 

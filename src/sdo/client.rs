@@ -450,6 +450,12 @@ impl SdoClient {
         false
     }
 
+    /// True when [`SdoClient::poll`] would do nothing (no transfer runs).
+    #[inline]
+    pub fn at_rest(&self) -> bool {
+        self.channels.iter().all(|c| c.transfer.is_none())
+    }
+
     /// Timeout supervision: aborts (0x05040000) one timed-out transfer per
     /// call. Returns `true` when nothing timed out.
     pub fn poll(&mut self, port: &mut impl CanPort, now: Ticks, q: &mut ActionQueue) -> bool {

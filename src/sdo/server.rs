@@ -346,6 +346,13 @@ impl SdoServer {
         reply.map(|r| r.to_can(tx))
     }
 
+    /// True when no transfer runs: [`SdoServer::poll`] and
+    /// [`SdoServer::pending_segment`] have nothing to do.
+    #[inline]
+    pub fn at_rest(&self) -> bool {
+        matches!(self.transfer, Transfer::Idle)
+    }
+
     /// Timeout supervision; returns the abort frame (0x05040000) when the
     /// running transfer timed out (the object's callback sees
     /// kObdEvAbortSdo).

@@ -903,6 +903,20 @@ impl Srdo {
         self.poll_with(state, now, q, crate::config::SRDO_CHECK_SRVT_BEFORE_1STRX)
     }
 
+    /// True when [`Srdo::poll`] at `now` would do nothing: the same
+    /// conditions as its early returns.
+    #[inline]
+    pub fn at_rest(&self, state: NmtState, now: Ticks) -> bool {
+        if self.count == 0 {
+            return true;
+        }
+        if state != NmtState::Operational {
+            return !SRDO_USE_PROGMONITOR || self.not_operational_reported;
+        }
+        let watch_srvt = crate::config::SRDO_CHECK_SRVT_BEFORE_1STRX && self.holding_seen;
+        !SRDO_USE_PROGMONITOR && self.cursor == 0 && !(watch_srvt || now.is_after(self.due))
+    }
+
     /// [`Srdo::poll`] with `SRDO_CHECK_SRVT_BEFORE_1STRX` as a parameter
     /// (so both settings are testable in one build).
     fn poll_with(

@@ -98,12 +98,19 @@ impl Plan {
 
 /// The eight frame bytes from their variable bytes (little-endian).
 #[cfg(not(srdo_static_mapping))]
+#[inline(always)]
 fn load_frame(bytes: &[&'static AtomicU8; 8]) -> u64 {
-    let mut b = [0u8; 8];
-    for (d, s) in b.iter_mut().zip(bytes) {
-        *d = s.load(Ordering::Relaxed);
-    }
-    u64::from_le_bytes(b)
+    let [b0, b1, b2, b3, b4, b5, b6, b7] = bytes;
+    u64::from_le_bytes([
+        b0.load(Ordering::Relaxed),
+        b1.load(Ordering::Relaxed),
+        b2.load(Ordering::Relaxed),
+        b3.load(Ordering::Relaxed),
+        b4.load(Ordering::Relaxed),
+        b5.load(Ordering::Relaxed),
+        b6.load(Ordering::Relaxed),
+        b7.load(Ordering::Relaxed),
+    ])
 }
 
 /// The eight frame bytes into their variable bytes.

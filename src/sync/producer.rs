@@ -145,6 +145,12 @@ impl SyncProducer {
         *self = Self::new();
     }
 
+    /// True when [`SyncProducer::poll`] at `now` would do nothing.
+    #[inline]
+    pub fn at_rest(&self, operating: bool, now: Ticks) -> bool {
+        self.id.is_none() || !operating || self.next.is_after(now)
+    }
+
     /// Sends a SYNC when one is due and `operating` (PRE-OPERATIONAL or
     /// OPERATIONAL). Returns `true` when a SYNC went out.
     pub fn poll(&mut self, port: &mut impl CanPort, operating: bool, now: Ticks) -> bool {

@@ -165,14 +165,18 @@ pub const fn is_complement(normal: u64, inverted: u64, dlc: u8) -> bool {
 /// inverted data under COB-ID 2, both with DLC `dlc` (≤ 8). The caller
 /// supplies both halves as read from the mapped variables; checking that
 /// they are complements is the caller's job ([`is_complement`]).
+#[inline]
 pub fn encode(ids: SrdoCobIds, normal: u64, inverted: u64, dlc: u8) -> (CanFrame, CanFrame) {
-    let n = usize::from(dlc.min(8));
-    let a = normal.to_le_bytes();
-    let b = inverted.to_le_bytes();
-    (
-        CanFrame::new(CanId::std_masked(ids.normal()), a.get(..n).unwrap_or(&a)),
-        CanFrame::new(CanId::std_masked(ids.inverted()), b.get(..n).unwrap_or(&b)),
-    )
+    let len = dlc.min(8);
+    // The bytes beyond the DLC are zero (the `CanFrame` invariant).
+    let mask = payload_mask(len);
+    let frame = |id: u16, v: u64| CanFrame {
+        id: CanId::std_masked(id),
+        rtr: false,
+        len,
+        data: (v & mask).to_le_bytes(),
+    };
+    (frame(ids.normal(), normal), frame(ids.inverted(), inverted))
 }
 
 /// The GFC frame: id 0x001, DLC 0 (manual 1.3 and table 7).

@@ -1,0 +1,202 @@
+//! The change watch of one TPDO for `CCM_USE_PDO_CHECK_VAR`: which bytes
+//! of memory its payload is made of, resolved once from the mapping, and
+//! what they held when its payload was last sampled.
+//!
+//! A TPDO's payload is a function of the bytes of its mapped variables
+//! alone (the mapping and the dictionary fixed): `sample` finds each
+//! mapped object, reads its storage and converts it. So while those bytes
+//! are the bytes they were when the payload was sampled, sampling again
+//! gives the same payload, and the comparison of every cycle needs only
+//! one pass over the resolved pieces. Constants (ROM objects, dummy
+//! entries) cannot change and are no pieces. An application variable
+//! (`tObdVarEntry`) is re-read through its entry on every pass, so that
+//! attaching another variable is seen.
+//!
+//! The resolution depends on the mapping and on the dictionary: the PDO
+//! module drops it ([`Watch::forget`]) whenever either may have changed
+//! (every reload of a PDO's parameters, a static data block attached or
+//! detached, NMT state changes, a dictionary replaced or rebuilt).
+
+use core::sync::atomic::{AtomicU8, Ordering};
+
+use super::Payload;
+use crate::od::{ObdVarEntry, ObjectDictionary, Storage};
+use crate::wire::pdo::MapEntry;
+
+/// Pieces a watch holds; a mapping with more variables in RAM is compared
+/// by sampling it (as without a watch).
+const PIECES: usize = 8;
+/// Bytes of the pieces together; beyond it, sampling as well.
+const RAW: usize = 8;
+
+/// Where one mapped variable lives.
+#[derive(Clone, Copy, Debug)]
+enum Piece {
+    /// A dictionary variable in RAM (native byte order).
+    Ram(&'static [AtomicU8]),
+    /// An application variable attached through a `tObdVarEntry`: the
+    /// entry, and the size it had when the bytes were taken.
+    Var(&'static ObdVarEntry, u8),
+}
+
+/// What a watch knows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum State {
+    /// Nothing resolved (the mapping or the dictionary changed).
+    Unresolved,
+    /// Pieces resolved, no bytes taken.
+    Resolved,
+    /// Bytes taken, the payload not yet.
+    Ready,
+    /// Pieces resolved and `raw` holds their bytes of the sampled
+    /// `payload`.
+    Taken,
+    /// The mapping has more pieces or bytes than a watch holds, or an
+    /// object that cannot be resolved: every comparison samples.
+    Unwatched,
+}
+
+/// The watch of one TPDO (see the module documentation).
+#[derive(Clone, Debug)]
+pub(crate) struct Watch {
+    state: State,
+    count: u8,
+    pieces: [Piece; PIECES],
+    /// The bytes of the pieces in order, byte k in bits 8k..8k+7.
+    raw: u64,
+    payload: Payload,
+}
+
+impl Watch {
+    /// A watch without resolution.
+    pub(crate) const fn new() -> Watch {
+        Watch {
+            state: State::Unresolved,
+            count: 0,
+            pieces: [Piece::Ram(&[]); PIECES],
+            raw: 0,
+            payload: Payload {
+                data: [0; 8],
+                len: 0,
+            },
+        }
+    }
+
+    /// Drops the resolution: the mapping or the dictionary may have
+    /// changed.
+    #[inline]
+    pub(crate) fn forget(&mut self) {
+        self.state = State::Unresolved;
+    }
+
+    /// The payload `sample` would give now, when the watched bytes are
+    /// those of the last sample; `None` when they differ (or nothing was
+    /// taken): then sample, and [`Watch::take`] the result.
+    #[inline]
+    pub(crate) fn unchanged(&self) -> Option<Payload> {
+        if self.state != State::Taken {
+            return None;
+        }
+        // The bytes now, packed as `raw` is (resolution made sure they
+        // fit).
+        let mut now = 0u64;
+        let mut shift = 0u32;
+        for piece in self.pieces.get(..usize::from(self.count))? {
+            let mem = match *piece {
+                Piece::Ram(m) => m,
+                Piece::Var(v, len) => match v.data() {
+                    Some(m) if m.len() == usize::from(len) => m,
+                    _ => return None,
+                },
+            };
+            for m in mem {
+                now |= u64::from(m.load(Ordering::Relaxed)).checked_shl(shift)?;
+                shift += 8;
+            }
+        }
+        (now == self.raw).then_some(self.payload)
+    }
+
+    /// Resolves the mapping if needed and takes the bytes of the pieces,
+    /// before the caller samples (a variable changed in between then
+    /// differs in the next comparison instead of being missed). `false`
+    /// when the mapping is not watched.
+    pub(crate) fn take_bytes(&mut self, od: &ObjectDictionary, entries: &[u32]) -> bool {
+        if self.state == State::Unresolved {
+            self.resolve(od, entries);
+        }
+        if self.state == State::Unwatched {
+            return false;
+        }
+        self.state = State::Resolved;
+        let mut raw = [0u8; RAW];
+        let mut at = 0usize;
+        for piece in self.pieces.iter_mut().take(usize::from(self.count)) {
+            let mem = match piece {
+                Piece::Ram(m) => *m,
+                Piece::Var(v, len) => {
+                    let Some(m) = v.data() else {
+                        return false;
+                    };
+                    let Ok(n) = u8::try_from(m.len()) else {
+                        return false;
+                    };
+                    *len = n;
+                    m
+                }
+            };
+            let Some(dst) = raw.get_mut(at..at + mem.len()) else {
+                return false;
+            };
+            crate::od::value::load(mem, dst);
+            at += mem.len();
+        }
+        // Byte k of the pieces in bits 8k.. as `unchanged` packs them.
+        self.raw = u64::from_le_bytes(raw);
+        self.state = State::Ready;
+        true
+    }
+
+    /// The payload sampled after [`Watch::take_bytes`] returned `true`.
+    pub(crate) fn take(&mut self, payload: Payload) {
+        if self.state == State::Ready {
+            self.payload = payload;
+            self.state = State::Taken;
+        }
+    }
+
+    fn resolve(&mut self, od: &ObjectDictionary, entries: &[u32]) {
+        self.state = State::Unwatched;
+        self.count = 0;
+        let mut bytes = 0usize;
+        for raw in entries {
+            let e = MapEntry::decode(*raw);
+            let Ok(obj) = od.find(e.index, e.sub) else {
+                return;
+            };
+            let piece = match obj.storage() {
+                Ok(Storage::Rom(_) | Storage::RomString(_)) => continue,
+                Ok(Storage::Ram(m) | Storage::RamString(m)) => {
+                    bytes += m.len();
+                    Piece::Ram(m)
+                }
+                Ok(Storage::Var(v)) => {
+                    // Its size is taken with the bytes; the largest it can
+                    // have is what the watch has room for.
+                    bytes += v.data().map_or(0, <[AtomicU8]>::len);
+                    Piece::Var(v, 0)
+                }
+                Err(_) => return,
+            };
+            let Some(slot) = self.pieces.get_mut(usize::from(self.count)) else {
+                return;
+            };
+            if bytes > RAW {
+                return;
+            }
+            *slot = piece;
+            self.count += 1;
+        }
+        self.state = State::Resolved;
+    }
+}
