@@ -73,8 +73,9 @@ static SRDO_GATE: SrdoGate = SrdoGate(Cell::new(
 
 /// The status table while no instance may be reached through
 /// [`SRDO_GATE`]: every number absent, so the fast path falls back to
-/// [`with_srdo_status`], which finds the right code. Never written (the
-/// fast path writes only to an entry that is not absent).
+/// [`with_srdo_status`], which finds the right code. Never written and
+/// never referenced mutably: the fast path reads an entry through a raw
+/// pointer and takes a reference only to an entry that is not absent.
 static NO_SRDO: [u8; MAX_SRDO_NUMBER + 1] = [status::ABSENT; MAX_SRDO_NUMBER + 1];
 
 // One bit of `live` per instance.
@@ -188,16 +189,21 @@ pub fn srdo_status(commu_index: u16, f: impl FnOnce(&mut u8)) -> bool {
     if n > MAX_SRDO_NUMBER {
         return false;
     }
-    // SAFETY: `SRDO_GATE` points to NO_SRDO (never written: all its
-    // entries are absent, so `f` does not run) or to the status table of
-    // the current instance, set as the last step of `with` and replaced by
-    // NO_SRDO before anything borrows the instances again; no reference
-    // into the instance exists meanwhile (the C API is single-threaded), so
-    // this access aliases nothing. `n` is within the table.
-    let st = unsafe { &mut *SRDO_GATE.0.get().cast::<u8>().add(n) };
-    if *st & status::ABSENT != 0 {
+    // SAFETY: `SRDO_GATE` points to NO_SRDO or to the status table of the
+    // current instance, both `MAX_SRDO_NUMBER + 1` bytes, and `n` is within
+    // them; reading through the raw pointer creates no reference, so it is
+    // sound for the read-only NO_SRDO as well.
+    let p = unsafe { SRDO_GATE.0.get().cast::<u8>().add(n) };
+    // SAFETY: `p` is in bounds and points to an initialised byte (above).
+    if unsafe { p.read() } & status::ABSENT != 0 {
         return false;
     }
+    // SAFETY: every entry of NO_SRDO is absent, so `p` points into the
+    // status table of the current instance, set as the last step of `with`
+    // and replaced by NO_SRDO before anything borrows the instances again;
+    // no reference into the instance exists meanwhile (the C API is
+    // single-threaded), so this mutable reference aliases nothing.
+    let st = unsafe { &mut *p };
     f(st);
     true
 }
