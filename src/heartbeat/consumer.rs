@@ -27,6 +27,14 @@ struct Entry {
     supervision: Supervision,
 }
 
+impl Entry {
+    /// A supervised producer whose heartbeat is overdue at `now` (what
+    /// [`HeartbeatConsumer::poll`] reports and `at_rest` asks).
+    fn expired(&self, now: Ticks) -> bool {
+        self.time_ms > 0 && self.supervision == Supervision::Active && now.is_after(self.deadline)
+    }
+}
+
 /// The heartbeat consumer.
 #[derive(Clone, Debug)]
 pub struct HeartbeatConsumer {
@@ -120,9 +128,7 @@ impl HeartbeatConsumer {
     /// True when [`HeartbeatConsumer::poll`] at `now` would do nothing.
     #[inline]
     pub fn at_rest(&self, now: Ticks) -> bool {
-        !self.entries.iter().any(|e| {
-            e.time_ms > 0 && e.supervision == Supervision::Active && now.is_after(e.deadline)
-        })
+        !self.entries.iter().any(|e| e.expired(now))
     }
 
     /// Checks the deadlines; reports at most one lost node per call (the
@@ -130,7 +136,7 @@ impl HeartbeatConsumer {
     /// node was reported.
     pub fn poll(&mut self, now: Ticks, q: &mut ActionQueue) -> bool {
         for e in self.entries.iter_mut() {
-            if e.time_ms > 0 && e.supervision == Supervision::Active && now.is_after(e.deadline) {
+            if e.expired(now) {
                 e.supervision = Supervision::Lost;
                 q.emit(Event::Hbc(e.node, ErrCtrlEvent::HbcConnectionLost));
                 return false;

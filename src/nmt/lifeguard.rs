@@ -97,6 +97,12 @@ impl LifeGuardSlave {
         self.initialised && self.life_time_ticks() > 0
     }
 
+    /// Configured, and the life time since the last guard request is over
+    /// at `now` (what `poll` reports while supervising, and `at_rest` asks).
+    fn life_time_over(&self, now: Ticks) -> bool {
+        self.is_configured() && now.is_after(self.deadline)
+    }
+
     /// What the module last observed: `kNmtErrCtrlEvIdle` before the first
     /// guard request, `kNmtErrCtrlEvLgConnected` while requests arrive in
     /// time, `kNmtErrCtrlEvLgLostConnection` after the life guarding event.
@@ -149,8 +155,7 @@ impl LifeGuardSlave {
     /// `heartbeat`) would do nothing.
     #[inline]
     pub fn at_rest(&self, now: Ticks, heartbeat: bool) -> bool {
-        self.supervision != Supervision::Active
-            || !(heartbeat || (self.is_configured() && now.is_after(self.deadline)))
+        self.supervision != Supervision::Active || !(heartbeat || self.life_time_over(now))
     }
 
     /// Checks the life time. Returns `true` exactly once per loss: the
@@ -160,10 +165,7 @@ impl LifeGuardSlave {
         if heartbeat && self.supervision == Supervision::Active {
             self.supervision = Supervision::Waiting;
         }
-        if self.is_configured()
-            && self.supervision == Supervision::Active
-            && now.is_after(self.deadline)
-        {
+        if self.supervision == Supervision::Active && self.life_time_over(now) {
             self.supervision = Supervision::Lost;
             return true;
         }
