@@ -42,6 +42,13 @@ impl Ticks {
     pub const fn is_after(self, deadline: Ticks) -> bool {
         (self.0.wrapping_sub(deadline.0) as i32) > 0
     }
+
+    /// True when `self` is `deadline` or later (a timer planned for
+    /// `deadline` is due); the same range as [`Ticks::is_after`].
+    #[inline]
+    pub const fn reached(self, deadline: Ticks) -> bool {
+        (self.0.wrapping_sub(deadline.0) as i32) >= 0
+    }
 }
 
 /// Converts milliseconds to ticks (saturating; CANopen times are ≤ 65 535 ms).

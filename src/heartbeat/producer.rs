@@ -64,13 +64,13 @@ impl HeartbeatProducer {
     /// True when [`HeartbeatProducer::poll`] at `now` would do nothing.
     #[inline]
     pub fn at_rest(&self, now: Ticks) -> bool {
-        !self.next.is_some_and(|due| is_due(due, now))
+        !self.next.is_some_and(|due| now.reached(due))
     }
 
     /// Sends a heartbeat when one is due.
     pub fn poll(&mut self, port: &mut impl CanPort, node: u8, state: u8, now: Ticks) {
         let Some(due) = self.next else { return };
-        if is_due(due, now) {
+        if now.reached(due) {
             // A send refused by a full driver buffer is retried next period;
             // heartbeat consumers tolerate one missing message by design.
             let _ = port.send(&nmt::encode_heartbeat(node, state), Priority::Low);
@@ -84,12 +84,6 @@ impl HeartbeatProducer {
             });
         }
     }
-}
-
-/// The heartbeat planned for `due` is to be sent at `now` (at or after
-/// its tick).
-fn is_due(due: Ticks, now: Ticks) -> bool {
-    now.is_after(due) || now == due
 }
 
 #[cfg(test)]

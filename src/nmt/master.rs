@@ -27,6 +27,11 @@ struct Slave {
 }
 
 impl Slave {
+    /// A listed slave with a guard time: node guarding runs for it.
+    fn guarded(&self) -> bool {
+        self.node != 0 && self.guard_ms > 0
+    }
+
     /// No guard request outstanding and none missed (an answer arrived, or
     /// guarding starts anew).
     fn answered_in_time(&mut self) {
@@ -292,8 +297,8 @@ impl NmtMaster {
             || self
                 .slaves
                 .iter()
-                .filter(|s| s.node != 0 && s.guard_ms > 0)
-                .all(|s| s.next_guard.is_after(now))
+                .filter(|s| s.guarded())
+                .all(|s| !now.reached(s.next_guard))
     }
 
     /// Guarding timers: sends due guard requests and reports a slave that
@@ -303,12 +308,8 @@ impl NmtMaster {
         if !self.enabled {
             return true;
         }
-        for s in self
-            .slaves
-            .iter_mut()
-            .filter(|s| s.node != 0 && s.guard_ms > 0)
-        {
-            if now.is_after(s.next_guard) || now == s.next_guard {
+        for s in self.slaves.iter_mut().filter(|s| s.guarded()) {
+            if now.reached(s.next_guard) {
                 if s.awaiting {
                     s.misses = s.misses.saturating_add(1);
                 }

@@ -162,7 +162,7 @@ impl SyncProducer {
         }
         let sent = port.send(&CanFrame::new(id, &[]), Priority::High).is_ok();
         let next = self.next.plus(self.period);
-        self.next = if now.is_after(next) || now == next {
+        self.next = if now.reached(next) {
             now.plus(self.period)
         } else {
             next
