@@ -974,6 +974,31 @@ fn check_var_sends_each_change_of_a_mapped_variable() {
     }
 }
 
+/// A TPDO sent by the application (`CcmSendPdo`) with data the comparison
+/// never saw is what it sent last: when the variable returns to the value
+/// the comparison saw before, before the next cycle, that is a change
+/// against the last transmission and is sent (pdo.h `PdoProcessCheckVar`
+/// compares with the last transmitted data).
+#[test]
+fn check_var_compares_with_a_transmission_of_the_application() {
+    let Some(mut net) = check_var_net() else {
+        return;
+    };
+    poke_input(&net, 1, 0x66);
+    let now = net.a.now();
+    net.a.stack.send_pdo(&mut net.a.port, 0x1800, now).unwrap();
+    net.a.drain();
+    poke_input(&net, 1, 0);
+    let at = net.bus.now().0;
+    net.step();
+    let f = net.frames(0x181);
+    assert_eq!(f.len(), 2, "sent by the application, then the change back");
+    assert_eq!(f[0].1, vec![0x66, 0, 0, 0, 0, 0, 0]);
+    assert_eq!(f[1], (at, vec![0, 0, 0, 0, 0, 0, 0]));
+    net.run(3);
+    assert_eq!(net.frames(0x181).len(), 2, "no change since");
+}
+
 /// A TPDO remapped in OPERATIONAL (CiA 301 §7.5.2.38 procedure: invalidate,
 /// sub 0 = 0, entry, sub 0 = 1, validate) is compared by its new mapping:
 /// a change of the newly mapped variable (0x2000 sub 9, not mapped before)

@@ -1159,15 +1159,21 @@ impl Pdo {
         let mut marked = false;
         for ch in self.tx.iter_mut().filter(|c| c.usable()) {
             let t = ch.cfg.tx_type;
-            if ch.event_pending || !(tx_type::is_event(t) || t == tx_type::SYNC_ACYCLIC) {
+            if ch.event_pending
+                || !(tx_type::is_event(t) || t == tx_type::SYNC_ACYCLIC)
+                || ch.watch.quiet()
+            {
                 continue;
             }
             if let Ok(p) = watched_sample(od, ch) {
                 if ch.last_sent.is_none() && !signalled {
                     ch.last_sent = Some(p);
+                    ch.watch.settle();
                 } else if ch.last_sent != Some(p) {
                     ch.event_pending = true;
                     marked = true;
+                } else {
+                    ch.watch.settle();
                 }
             }
         }
@@ -1445,6 +1451,7 @@ fn transmit(ch: &mut Channel, port: &mut impl CanPort, p: Payload, now: Ticks) -
     port.send(&wire::encode_pdo(id, &p.data, p.len), Priority::Low)?;
     ch.last_tx = Some(now);
     ch.last_sent = Some(p);
+    ch.watch.unsettle();
     ch.event_pending = false;
     if tx_type::is_event(ch.cfg.tx_type) && ch.cfg.event_ms > 0 {
         ch.event_deadline = Some(now.plus_ms(u32::from(ch.cfg.event_ms)));

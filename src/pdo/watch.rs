@@ -65,6 +65,9 @@ pub(crate) struct Watch {
     /// The bytes of the pieces in order, byte k in bits 8k..8k+7.
     raw: u64,
     payload: Payload,
+    /// The channel's last sent payload equals `payload` (set by
+    /// [`Watch::settle`]); cleared whenever either may change.
+    settled: bool,
 }
 
 impl Watch {
@@ -79,6 +82,7 @@ impl Watch {
                 data: [0; 8],
                 len: 0,
             },
+            settled: false,
         }
     }
 
@@ -87,6 +91,30 @@ impl Watch {
     #[inline]
     pub(crate) fn forget(&mut self) {
         self.state = State::Unresolved;
+        self.settled = false;
+    }
+
+    /// Records that the channel's last sent payload is the one taken:
+    /// from now on, while the watched bytes stay as they are,
+    /// [`Watch::quiet`] is true without a payload being formed.
+    #[inline]
+    pub(crate) fn settle(&mut self) {
+        self.settled = self.state == State::Taken;
+    }
+
+    /// The channel's last sent payload changed: it is no longer known to
+    /// equal the taken one.
+    #[inline]
+    pub(crate) fn unsettle(&mut self) {
+        self.settled = false;
+    }
+
+    /// True when the payload is known to equal the channel's last sent one
+    /// and the watched bytes have not changed since: the comparison of
+    /// this cycle would find nothing.
+    #[inline]
+    pub(crate) fn quiet(&self) -> bool {
+        self.settled && self.same_bytes()
     }
 
     /// The payload `sample` would give now, when the watched bytes are
@@ -94,27 +122,40 @@ impl Watch {
     /// taken): then sample, and [`Watch::take`] the result.
     #[inline]
     pub(crate) fn unchanged(&self) -> Option<Payload> {
+        (self.state == State::Taken && self.same_bytes()).then_some(self.payload)
+    }
+
+    /// The watched bytes are those taken last (false when nothing was
+    /// taken since the resolution).
+    #[inline]
+    fn same_bytes(&self) -> bool {
         if self.state != State::Taken {
-            return None;
+            return false;
         }
         // The bytes now, packed as `raw` is (resolution made sure they
         // fit).
         let mut now = 0u64;
         let mut shift = 0u32;
-        for piece in self.pieces.get(..usize::from(self.count))? {
+        let Some(pieces) = self.pieces.get(..usize::from(self.count)) else {
+            return false;
+        };
+        for piece in pieces {
             let mem = match *piece {
                 Piece::Ram(m) => m,
                 Piece::Var(v, len) => match v.data() {
                     Some(m) if m.len() == usize::from(len) => m,
-                    _ => return None,
+                    _ => return false,
                 },
             };
             for m in mem {
-                now |= u64::from(m.load(Ordering::Relaxed)).checked_shl(shift)?;
+                let Some(b) = u64::from(m.load(Ordering::Relaxed)).checked_shl(shift) else {
+                    return false;
+                };
+                now |= b;
                 shift += 8;
             }
         }
-        (now == self.raw).then_some(self.payload)
+        now == self.raw
     }
 
     /// Resolves the mapping if needed and takes the bytes of the pieces,
@@ -125,6 +166,7 @@ impl Watch {
         if self.state == State::Unresolved {
             self.resolve(od, entries);
         }
+        self.settled = false;
         if self.state == State::Unwatched {
             return false;
         }
