@@ -162,6 +162,29 @@ for pm in on off; do
 done
 CHANDSHAKE=$(per_call "$WORK/capi-off-8" handshake $CYCLES handshake)
 CSEND=$(per_call "$WORK/capi-off-8" send $CYCLES send)
+# Where the instructions of a C API figure go: where <binary> <fn> <scenario>
+# [<base scenario>] prints bench/where.py's table (self cost per part of the
+# library, from the same N / 2N runs as per_call).
+profile() { # <binary> <fn> <scenario> <N> -> profile file
+    local out=$WORK/where-$(basename "$1")-$3-$4.out
+    valgrind --tool=callgrind --callgrind-out-file="$out" --collect-atstart=no \
+        --toggle-collect="measure_$2" "$1" "$3" "$4" >/dev/null 2>"$WORK/valgrind.log" ||
+        { cat "$WORK/valgrind.log" >&2; die "where: $1 $3"; }
+    echo "$out"
+}
+where() {
+    local bin=$1 fn=$2 files=()
+    for s in "${@:3}"; do
+        files+=("$(profile "$bin" "$fn" "$s" $CYCLES)" "$(profile "$bin" "$fn" "$s" $((2 * CYCLES)))")
+    done
+    (cd "$WORK" && python3 "$ROOT/bench/where.py" "$ROOT" $CYCLES "${files[@]}") || die "bench/where.py"
+}
+log "C API: where the instructions go"
+WHERE_PAIR_OFF=$(where "$WORK/capi-off-1" cycle rx idle)
+WHERE_PAIR_ON=$(where "$WORK/capi-on-1" cycle rx idle)
+WHERE_IDLE=$(where "$WORK/capi-off-8" cycle idle)
+WHERE_SEND=$(where "$WORK/capi-off-8" send send)
+WHERE_HANDSHAKE=$(where "$WORK/capi-off-8" handshake handshake)
 cflat() { awk -v a="${CRX[$1,1]}" -v b="${CRX[$1,64]}" 'BEGIN {printf "%+.1f\n", (b - a) * 100 / a}'; }
 CFLAT_ON=$(cflat on)
 CFLAT_OFF=$(cflat off)
@@ -425,6 +448,38 @@ not times); sizes and RAM are those of the TMS570 build
 Host figures are built with the library's release settings (opt-level "s",
 LTO, one codegen unit). Program monitor on = default features; off =
 \`--no-default-features --features srdo-gfc\`.
+
+## Where the C API instructions go
+
+Per call, from the same callgrind runs as the table above ((Ir(2N) − Ir(N)) / N
+for every line of the profile, bench/where.py): each line of machine code
+counts for the part of the source its line comes from (after inlining, one
+function holds lines of many files; \`mostly in\` names the functions of the
+binary that hold them). Lines of the Rust core library count for the
+function they were inlined into. The rows add up to the figure of the table.
+
+Received SRDO pair, program monitor off (the pair cycle minus the idle
+cycle; 1 SRDO):
+
+$WHERE_PAIR_OFF
+
+The same with the program monitor on:
+
+$WHERE_PAIR_ON
+
+Idle \`CcmProcess\` (8 SRDOs, program monitor off):
+
+$WHERE_IDLE
+
+\`CcmSendSrdo\` of the transmit SRDO:
+
+$WHERE_SEND
+
+\`CcmGetSrdoState\` + \`CcmSetSrdoState\` from the main loop (the
+application's part is the calling C code: the local variable, the OR of the
+two bits, the calls):
+
+$WHERE_HANDSHAKE
 
 ## Whole images (scripts/tms570/link_main.c, \`arm-none-eabi-size\`)
 
