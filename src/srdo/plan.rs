@@ -72,7 +72,10 @@ impl Plan {
         match self {
             Plan::Bytes { normal, inverted } => {
                 let mask = payload_mask(dlc);
-                Some((load_frame(normal) & mask, load_frame(inverted) & mask))
+                Some((
+                    load_frame(normal, dlc) & mask,
+                    load_frame(inverted, dlc) & mask,
+                ))
             }
             Plan::General(g) => g.gather(),
         }
@@ -96,21 +99,29 @@ impl Plan {
     }
 }
 
-/// The eight frame bytes from their variable bytes (little-endian).
+/// The frame bytes from their variable bytes (little-endian); bytes 4..8
+/// only when they are mapped (`dlc` above 4), else 0.
 #[cfg(not(srdo_static_mapping))]
 #[inline(always)]
-fn load_frame(bytes: &[&'static AtomicU8; 8]) -> u64 {
+fn load_frame(bytes: &[&'static AtomicU8; 8], dlc: u8) -> u64 {
     let [b0, b1, b2, b3, b4, b5, b6, b7] = bytes;
-    u64::from_le_bytes([
+    let low = u32::from_le_bytes([
         b0.load(Ordering::Relaxed),
         b1.load(Ordering::Relaxed),
         b2.load(Ordering::Relaxed),
         b3.load(Ordering::Relaxed),
-        b4.load(Ordering::Relaxed),
-        b5.load(Ordering::Relaxed),
-        b6.load(Ordering::Relaxed),
-        b7.load(Ordering::Relaxed),
-    ])
+    ]);
+    let high = if dlc > 4 {
+        u32::from_le_bytes([
+            b4.load(Ordering::Relaxed),
+            b5.load(Ordering::Relaxed),
+            b6.load(Ordering::Relaxed),
+            b7.load(Ordering::Relaxed),
+        ])
+    } else {
+        0
+    };
+    u64::from(low) | u64::from(high) << 32
 }
 
 /// The eight frame bytes into their variable bytes.
