@@ -975,6 +975,27 @@ impl Stack {
         self.srdo
             .send(port, self.state, commu_index, now, &mut self.queue)
     }
+
+    /// [`Stack::send_srdo`] that returns the SRDO's success event
+    /// (`Some(commu_index)` for `Event::SrdoEvent(commu_index)`) instead
+    /// of queueing it when nothing else is queued (see
+    /// [`crate::srdo::Srdo::send_first`]): the caller hands it to the
+    /// application, then takes whatever [`Stack::has_queued`] says is left.
+    pub fn send_srdo_first(
+        &mut self,
+        port: &mut impl CanPort,
+        commu_index: u16,
+        now: Ticks,
+    ) -> CopResult<Option<u16>> {
+        self.srdo
+            .send_first(port, self.state, commu_index, now, &mut self.queue)
+    }
+
+    /// True when events or internal work are queued (what [`Stack::drain`]
+    /// would take).
+    pub fn has_queued(&self) -> bool {
+        !self.queue.is_empty()
+    }
 }
 
 #[cfg(test)]

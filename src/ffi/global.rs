@@ -313,6 +313,39 @@ pub fn drain() {
     pump(|i, now| i.stack.drain(&mut i.port, now));
 }
 
+/// [`with`] for an API function whose work may yield an SRDO's success
+/// event (`f` returns the SRDO's communication index, or queues the event
+/// when its `bool` argument is false): `AppSrdoEvent` runs at once, after
+/// the instance is released, as the pump would hand the event out first;
+/// then the pump takes what is still queued. Inside a callback (the pump
+/// running) `f` is told to queue, so that callbacks never nest, and the
+/// running pump hands the event out.
+#[inline(always)]
+pub fn with_srdo_event<R>(
+    f: impl FnOnce(&mut Instance, bool) -> (R, Option<u16>),
+) -> Result<R, CopKernel> {
+    let direct = !GLOBAL.pumping.get();
+    let (r, first, queued) = with(|i| {
+        let (r, idx) = f(i, direct);
+        let cb = i.callbacks.srdo.and_then(|c| c.m_fpSrdoEvent);
+        (r, idx.map(|idx| (cb, idx)), i.stack.has_queued())
+    })?;
+    let mut queued = queued;
+    if let Some((cb, idx)) = first {
+        GLOBAL.pumping.set(true);
+        // An SRDO event never reports an error (`Pending::call`).
+        let _ = callbacks::Pending::SrdoEvent(cb, idx).call(current());
+        GLOBAL.pumping.set(false);
+        // What the callback queued (through the API) goes out as the
+        // pump's next steps would have taken it.
+        queued = queued || with(|i| i.stack.has_queued()).unwrap_or(false);
+    }
+    if queued {
+        drain();
+    }
+    Ok(r)
+}
+
 /// Reports an error to the callback registered with
 /// `CcmRegisterErrorCallback` (if any).
 pub fn report_error(code: CopKernel) {

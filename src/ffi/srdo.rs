@@ -12,7 +12,7 @@
 use core::ffi::c_void;
 
 use super::driver::TgtClock;
-use super::global::{self, Instance, code, drain};
+use super::global::{self, Instance, code};
 use super::ptr::{self, Out, c_try};
 use super::types::*;
 use crate::error::CopKernel;
@@ -62,11 +62,17 @@ pub extern "C" fn CcmSendSrdo(wSrdoCommuIndex_p: WORD) -> tCopKernel {
 
 fn send_one(idx: WORD) -> tCopKernel {
     let now = TgtClock.now();
-    let r = global::with(|i| {
+    let r = global::with_srdo_event(|i, direct| {
         let Instance { stack, port, .. } = i;
-        stack.send_srdo(port, idx, now)
+        if direct {
+            match stack.send_srdo_first(port, idx, now) {
+                Ok(e) => (Ok(()), e),
+                Err(e) => (Err(e), None),
+            }
+        } else {
+            (stack.send_srdo(port, idx, now), None)
+        }
     });
-    drain();
     code(r)
 }
 

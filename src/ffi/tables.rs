@@ -39,7 +39,16 @@ impl Default for AppTables {
 
 impl AppTables {
     /// Defines the tables again whose used entries changed since.
+    #[inline(always)]
     pub fn sync(&self, stack: &mut Stack, port: &mut CdrvPort) {
+        // Most nodes define neither table: nothing to compare in a cycle.
+        if self.slave_count != 0 || self.producer_count != 0 {
+            self.compare(stack, port);
+        }
+    }
+
+    #[inline(never)]
+    fn compare(&self, stack: &mut Stack, port: &mut CdrvPort) {
         let t = *self;
         if t.slave_count != 0 {
             // SAFETY: CcmDefineSlaveTab's contract: the table stays valid
