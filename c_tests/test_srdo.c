@@ -121,6 +121,51 @@ static void Transmit (void)
     TestExpectFrame("SRDO inverted frame (all)", 0x102, 1, abInverted);
 }
 
+/* CcmSendSrdo from inside AppSrdoEvent (an application answering a
+ * received SRDO with its own): the transmit SRDO's AppSrdoEvent comes after
+ * the running callback has returned, never inside it (the library's rule
+ * for every Ccm* call from a callback, test_callback_order.c). */
+static unsigned   uHookDepth_g;
+static unsigned   uHookMaxDepth_g;
+static tCopKernel HookSendRet_g = kCopSuccessful;
+
+static void SendInHook (WORD wSrdoCommuIndex_p)
+{
+    uHookDepth_g++;
+    if (uHookDepth_g > uHookMaxDepth_g)
+    {
+        uHookMaxDepth_g = uHookDepth_g;
+    }
+    if (wSrdoCommuIndex_p == 0x1302)
+    {
+        HookSendRet_g = CcmSendSrdo(0x1301);
+    }
+    uHookDepth_g--;
+}
+
+static void SendFromCallback (void)
+{
+    static CONST BYTE abRxNormal[1] = { 0x3C };
+    static CONST BYTE abRxInverted[1] = { 0xC3 };
+    static CONST BYTE abNormal[1] = { 0x5A };
+    static CONST BYTE abInverted[1] = { 0xA5 };
+    unsigned uEvents = uTestSrdoEvents_g;
+
+    TestDrainSent();
+    pfnTestSrdoEventHook_g = SendInHook;
+    SimInject(0x103, 0, 1, abRxNormal);
+    SimAdvanceMs(1);
+    SimInject(0x104, 0, 1, abRxInverted);
+    TestProcess(1);
+    pfnTestSrdoEventHook_g = NULL;
+    CHECK_RET(HookSendRet_g, kCopSuccessful);
+    TestExpectFrame("SRDO normal frame (from the callback)", 0x101, 1, abNormal);
+    TestExpectFrame("SRDO inverted frame (from the callback)", 0x102, 1, abInverted);
+    CHECK_EQ(uTestSrdoEvents_g, uEvents + 2);   /* 0x1302 received, then 0x1301 sent */
+    CHECK_EQ(wTestLastSrdoIndex_g, 0x1301);
+    CHECK_EQ(uHookMaxDepth_g, 1);
+}
+
 static void Receive (void)
 {
     static CONST BYTE abNormal[1] = { 0x3C };
@@ -189,6 +234,7 @@ int main (void)
     WriteU8(0x1301, 3, 30, kCopSrdoNmtError);      /* no SRDO parameter changes while OPERATIONAL */
 
     Transmit();
+    SendFromCallback();
     Receive();
     Gfc();
     CHECK(uTestProgMonEvents_g > 0);
