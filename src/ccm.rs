@@ -973,13 +973,14 @@ impl Stack {
         now: Ticks,
     ) -> CopResult {
         self.srdo
-            .send(port, self.state, commu_index, now, &mut self.queue)
+            .send(port, self.state, commu_index, now, &mut self.queue, false)
+            .map(|_| ())
     }
 
     /// [`Stack::send_srdo`] that returns the SRDO's success event
     /// (`Some(commu_index)` for `Event::SrdoEvent(commu_index)`) instead
     /// of queueing it when nothing else is queued (see
-    /// [`crate::srdo::Srdo::send_first`]): the caller hands it to the
+    /// [`crate::srdo::Srdo::send`]): the caller hands it to the
     /// application, then takes whatever [`Stack::has_queued`] says is left.
     pub fn send_srdo_first(
         &mut self,
@@ -988,7 +989,7 @@ impl Stack {
         now: Ticks,
     ) -> CopResult<Option<u16>> {
         self.srdo
-            .send_first(port, self.state, commu_index, now, &mut self.queue)
+            .send(port, self.state, commu_index, now, &mut self.queue, true)
     }
 
     /// True when events or internal work are queued (what [`Stack::drain`]

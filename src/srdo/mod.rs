@@ -1049,6 +1049,12 @@ impl Srdo {
     /// priority buffer. A driver refusal is reported and returned with the
     /// driver's code (if frame 2 is refused, frame 1 has already gone).
     /// Success: status ok, `Event::SrdoEvent`, `ProgMon(SrdoTransmitted)`.
+    ///
+    /// With `first` and an empty queue the success event is not queued but
+    /// returned as `Some(commu_index)` (the event the queue would hand out
+    /// first; the program monitor's event is queued after it), so that the
+    /// caller can hand it to the application at once; else `None`.
+    #[allow(clippy::too_many_arguments)]
     pub fn send(
         &mut self,
         port: &mut impl CanPort,
@@ -1056,46 +1062,8 @@ impl Srdo {
         commu_index: u16,
         now: Ticks,
         q: &mut ActionQueue,
-    ) -> CopResult {
-        let slot = self.transmit(port, state, commu_index, now, q)?;
-        self.report_ok(slot, ProgMonEvent::SrdoTransmitted, q);
-        Ok(())
-    }
-
-    /// [`Srdo::send`] that does not queue its success event
-    /// (`Event::SrdoEvent(commu_index)`) when the queue is empty, but
-    /// returns `Some(commu_index)` (the event the queue would hand out
-    /// first; the program monitor's event is queued after it), so that the
-    /// caller can hand it to the application at once.
-    pub fn send_first(
-        &mut self,
-        port: &mut impl CanPort,
-        state: NmtState,
-        commu_index: u16,
-        now: Ticks,
-        q: &mut ActionQueue,
+        first: bool,
     ) -> CopResult<Option<u16>> {
-        let slot = self.transmit(port, state, commu_index, now, q)?;
-        if q.is_empty() {
-            let first = self.report_ok_first(slot, ProgMonEvent::SrdoTransmitted, q);
-            return Ok(first.map(|_| commu_index));
-        }
-        self.report_ok(slot, ProgMonEvent::SrdoTransmitted, q);
-        Ok(None)
-    }
-
-    /// The checks and the two frames of [`Srdo::send`]; the SRDO's slot.
-    /// Errors after the checks of the SRDO itself are reported to the
-    /// queue.
-    #[inline(always)]
-    fn transmit(
-        &mut self,
-        port: &mut impl CanPort,
-        state: NmtState,
-        commu_index: u16,
-        now: Ticks,
-        q: &mut ActionQueue,
-    ) -> CopResult<usize> {
         let slot = self.slot_for(commu_index)?;
         if state != NmtState::Operational || !self.operational {
             return Err(CopKernel::SrdoNmtError);
@@ -1134,7 +1102,12 @@ impl Srdo {
             s.deadline = now.plus(s.sct);
             s.flags |= flag::ARMED;
         }
-        Ok(slot)
+        if first && q.is_empty() {
+            let e = self.report_ok_first(slot, ProgMonEvent::SrdoTransmitted, q);
+            return Ok(e.map(|_| commu_index));
+        }
+        self.report_ok(slot, ProgMonEvent::SrdoTransmitted, q);
+        Ok(None)
     }
 
     /// `CcmSendGfc`: sends the GFC (id 0x001, DLC 0). `kCopSrdoNmtError`
