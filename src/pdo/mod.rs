@@ -1157,11 +1157,16 @@ impl Pdo {
     /// change, not merely because the node started.
     fn check_vars(&mut self, od: &ObjectDictionary, signalled: bool) -> bool {
         let mut marked = false;
-        for ch in self.tx.iter_mut().filter(|c| c.usable()) {
+        for ch in self.tx.iter_mut() {
+            // The cheapest test first: a settled watch whose bytes are
+            // unchanged has nothing to compare, whatever else holds.
+            if ch.watch.quiet() {
+                continue;
+            }
             let t = ch.cfg.tx_type;
-            if ch.event_pending
+            if !ch.usable()
+                || ch.event_pending
                 || !(tx_type::is_event(t) || t == tx_type::SYNC_ACYCLIC)
-                || ch.watch.quiet()
             {
                 continue;
             }

@@ -62,8 +62,8 @@ pub(crate) struct Watch {
     state: State,
     count: u8,
     pieces: [Piece; PIECES],
-    /// The bytes of the pieces in order, byte k in bits 8k..8k+7.
-    raw: u64,
+    /// The bytes of the pieces in order.
+    raw: [u8; RAW],
     payload: Payload,
     /// The channel's last sent payload equals `payload` (set by
     /// [`Watch::settle`]); cleared whenever either may change.
@@ -77,7 +77,7 @@ impl Watch {
             state: State::Unresolved,
             count: 0,
             pieces: [Piece::Ram(&[]); PIECES],
-            raw: 0,
+            raw: [0; RAW],
             payload: Payload {
                 data: [0; 8],
                 len: 0,
@@ -132,13 +132,12 @@ impl Watch {
         if self.state != State::Taken {
             return false;
         }
-        // The bytes now, packed as `raw` is (resolution made sure they
-        // fit).
-        let mut now = 0u64;
-        let mut shift = 0u32;
+        // The bytes now against those taken, in the order `take_bytes`
+        // laid them out (resolution made sure they fit).
         let Some(pieces) = self.pieces.get(..usize::from(self.count)) else {
             return false;
         };
+        let mut taken = self.raw.iter();
         for piece in pieces {
             let mem = match *piece {
                 Piece::Ram(m) => m,
@@ -148,14 +147,12 @@ impl Watch {
                 },
             };
             for m in mem {
-                let Some(b) = u64::from(m.load(Ordering::Relaxed)).checked_shl(shift) else {
+                if taken.next() != Some(&m.load(Ordering::Relaxed)) {
                     return false;
-                };
-                now |= b;
-                shift += 8;
+                }
             }
         }
-        now == self.raw
+        true
     }
 
     /// Resolves the mapping if needed and takes the bytes of the pieces,
@@ -193,8 +190,7 @@ impl Watch {
             crate::od::value::load(mem, dst);
             at += mem.len();
         }
-        // Byte k of the pieces in bits 8k.. as `unchanged` packs them.
-        self.raw = u64::from_le_bytes(raw);
+        self.raw = raw;
         self.state = State::Ready;
         true
     }
