@@ -237,7 +237,9 @@ int main (void)
     SendFromCallback();
     Receive();
     Gfc();
+#if defined(COP_CFG_SRDO_USE_PROGMONITOR)
     CHECK(uTestProgMonEvents_g > 0);
+#endif
 
     CHECK_RET(CcmShutDownCANopen(), kCopSuccessful);
     return TEST_DONE("test_srdo");
