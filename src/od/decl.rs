@@ -30,6 +30,30 @@
 
 use core::sync::atomic::{AtomicU8, Ordering};
 
+use crate::od::{Access, DataType, ObdSubEntry, ObdVarEntry};
+
+/// The subindex table of a one-value object: subindex 0 alone, the RAM
+/// variable `var` without default (it keeps what it holds at a reset).
+pub const fn ram_object(
+    typ: DataType,
+    access: Access,
+    var: &'static [AtomicU8],
+) -> [ObdSubEntry; 1] {
+    [ObdSubEntry::ram(0, typ, access, var, None)]
+}
+
+/// The subindex table of a one-value object whose variable the application
+/// attaches (USERDEF / DOMAIN): subindex 0 alone, `size` bytes, without
+/// default.
+pub const fn var_object(
+    typ: DataType,
+    access: Access,
+    entry: &'static ObdVarEntry,
+    size: u32,
+) -> [ObdSubEntry; 1] {
+    [ObdSubEntry::var(0, typ, access, entry, size, None)]
+}
+
 /// A variable of `N` bytes, all zero.
 pub const fn zeroed<const N: usize>() -> [AtomicU8; N] {
     [const { AtomicU8::new(0) }; N]
@@ -157,13 +181,11 @@ macro_rules! od_ram {
     ($vis:vis static $subs:ident, $var:ident: $t:ty => $typ:ident, $access:ident) => {
         $vis static $var: [::core::sync::atomic::AtomicU8; ::core::mem::size_of::<$t>()] =
             $crate::od::decl::zeroed();
-        $vis static $subs: [$crate::od::ObdSubEntry; 1] = [$crate::od::ObdSubEntry::ram(
-            0,
+        $vis static $subs: [$crate::od::ObdSubEntry; 1] = $crate::od::decl::ram_object(
             $crate::od::DataType::$typ,
             $crate::od::Access::$access,
             &$var,
-            None,
-        )];
+        );
     };
 }
 

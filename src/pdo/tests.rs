@@ -44,23 +44,8 @@ static S2000: [ObdSubEntry; 10] = [
     ObdSubEntry::ram_string(9, Access::PRW, &TEXT, c""),
 ];
 
-static SYNC_COB: [AtomicU8; 4] = od_decl::zeroed();
-static SYNC_COB_DEF: [u8; 4] = 0x80u32.to_ne_bytes();
-static SYNC_WINDOW: [AtomicU8; 4] = od_decl::zeroed();
-static S1005: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-    0,
-    DataType::UInt32,
-    Access::SRW,
-    &SYNC_COB,
-    Some(&SYNC_COB_DEF),
-)];
-static S1007: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-    0,
-    DataType::UInt32,
-    Access::SRW,
-    &SYNC_WINDOW,
-    Some(&[0; 4]),
-)];
+crate::od_ram!(static S1005, SYNC_COB: u32 = 0x80 => UInt32, SRW);
+crate::od_ram!(static S1007, SYNC_WINDOW: u32 = 0 => UInt32, SRW);
 
 static GENERIC: [ObdEntry; 6] = [
     ObdEntry::new(0x1005, &S1005, None),

@@ -21,7 +21,8 @@
 //!
 //! Each macro declares a module holding the variables, the subindex table
 //! `SUBS` and the index `INDEX`; [`srdo_obd_entry!`](crate::srdo_obd_entry)
-//! turns such a module into the `ObdEntry` of a part table:
+//! turns such a module into the `ObdEntry` of a part table,
+//! [`srdo_obd_entries!`](crate::srdo_obd_entries) several into an array:
 //!
 //! ```
 //! use cop::od::ObdEntry;
@@ -30,13 +31,10 @@
 //! cop::obd_create_srdo_mapp!(pub mod srdo1_mapp, 0x1381, [0x6200_0110, 0x6201_0110]);
 //! cop::obd_create_srdo_cfg_valid!(pub mod cfg_valid);
 //! cop::obd_create_srdo_crc!(pub mod checksums, [0x0000]);
-//! static PART: [ObdEntry; 5] = [
-//!     cop::srdo_obd_entry!(gfc),
-//!     cop::srdo_obd_entry!(srdo1),
-//!     cop::srdo_obd_entry!(srdo1_mapp),
-//!     cop::srdo_obd_entry!(cfg_valid),
-//!     cop::srdo_obd_entry!(checksums),
-//! ];
+//! static PART: [ObdEntry; 5] =
+//!     cop::srdo_obd_entries![gfc, srdo1, srdo1_mapp, cfg_valid, checksums];
+//! static GFC: ObdEntry = cop::srdo_obd_entry!(gfc);
+//! assert_eq!(PART[0].index(), GFC.index());
 //! ```
 
 use core::sync::atomic::AtomicU8;
@@ -357,4 +355,13 @@ macro_rules! srdo_obd_entry {
         use $m as m;
         $crate::od::ObdEntry::new(m::INDEX, &m::SUBS, None)
     }};
+}
+
+/// The array of the `ObdEntry`s of several modules declared by the SRDO
+/// macros, in the order given (`srdo_obd_entry!` of each).
+#[macro_export]
+macro_rules! srdo_obd_entries {
+    ($($m:path),+ $(,)?) => {
+        [$($crate::srdo_obd_entry!($m)),+]
+    };
 }

@@ -50,30 +50,30 @@ const fn u16_var(sub: u8, buf: &'static [AtomicU8], at: usize) -> ObdSubEntry {
     )
 }
 
-static S6200: [ObdSubEntry; 5] = [
-    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[4]),
-    u8_var(1, &NORMAL, 0),
-    u8_var(2, &NORMAL, 1),
-    u8_var(3, &NORMAL, 2),
-    u8_var(4, &NORMAL, 3),
-];
-static S6201: [ObdSubEntry; 3] = [
-    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[2]),
-    u16_var(1, &NORMAL, 4),
-    u16_var(2, &NORMAL, 6),
-];
-static S6300: [ObdSubEntry; 5] = [
-    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[4]),
-    u8_var(1, &INVERTED, 0),
-    u8_var(2, &INVERTED, 1),
-    u8_var(3, &INVERTED, 2),
-    u8_var(4, &INVERTED, 3),
-];
-static S6301: [ObdSubEntry; 3] = [
-    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[2]),
-    u16_var(1, &INVERTED, 4),
-    u16_var(2, &INVERTED, 6),
-];
+/// Subindices 1..4: UNSIGNED8 over bytes 0..3 of `buf`.
+const fn four_u8(buf: &'static [AtomicU8]) -> [ObdSubEntry; 5] {
+    [
+        ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[4]),
+        u8_var(1, buf, 0),
+        u8_var(2, buf, 1),
+        u8_var(3, buf, 2),
+        u8_var(4, buf, 3),
+    ]
+}
+
+/// Subindices 1..2: UNSIGNED16 over bytes 4..7 of `buf`.
+const fn two_u16(buf: &'static [AtomicU8]) -> [ObdSubEntry; 3] {
+    [
+        ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[2]),
+        u16_var(1, buf, 4),
+        u16_var(2, buf, 6),
+    ]
+}
+
+static S6200: [ObdSubEntry; 5] = four_u8(&NORMAL);
+static S6201: [ObdSubEntry; 3] = two_u16(&NORMAL);
+static S6300: [ObdSubEntry; 5] = four_u8(&INVERTED);
+static S6301: [ObdSubEntry; 3] = two_u16(&INVERTED);
 static S6400: [ObdSubEntry; 5] = [
     ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[4]),
     ObdSubEntry::ram(1, DataType::UInt16, Access::PR, &RO_VAR, Some(&[0, 0])),
@@ -120,19 +120,8 @@ crate::obd_create_srdo_mapp!(
 crate::obd_create_srdo_cfg_valid!(mod cfg_valid);
 crate::obd_create_srdo_crc!(mod crcs, [0, 0, 0, 0]);
 
-static GENERIC: [ObdEntry; 11] = [
-    crate::srdo_obd_entry!(gfc),
-    crate::srdo_obd_entry!(c1),
-    crate::srdo_obd_entry!(c2),
-    crate::srdo_obd_entry!(c3),
-    crate::srdo_obd_entry!(c4),
-    crate::srdo_obd_entry!(m1),
-    crate::srdo_obd_entry!(m2),
-    crate::srdo_obd_entry!(m3),
-    crate::srdo_obd_entry!(m4),
-    crate::srdo_obd_entry!(cfg_valid),
-    crate::srdo_obd_entry!(crcs),
-];
+static GENERIC: [ObdEntry; 11] =
+    crate::srdo_obd_entries![gfc, c1, c2, c3, c4, m1, m2, m3, m4, cfg_valid, crcs];
 static DEVICE: [ObdEntry; 7] = [
     ObdEntry::new(0x6200, &S6200, None),
     ObdEntry::new(0x6201, &S6201, None),
@@ -150,15 +139,8 @@ crate::obd_create_srdo_mapp!(mod gm1, 0x1381, []);
 crate::obd_create_srdo_mapp!(mod gm3, 0x1383, []);
 crate::obd_create_srdo_cfg_valid!(mod g_cfg_valid);
 crate::obd_create_srdo_crc!(mod g_crcs, [0, 0, 0]);
-static GAPPED: [ObdEntry; 6] = [
-    crate::srdo_obd_entry!(g1),
-    crate::srdo_obd_entry!(g3),
-    crate::srdo_obd_entry!(gm1),
-    crate::srdo_obd_entry!(gm3),
-    crate::srdo_obd_entry!(g_cfg_valid),
-    crate::srdo_obd_entry!(g_crcs),
-];
-static NO_CFG_VALID: [ObdEntry; 2] = [crate::srdo_obd_entry!(g1), crate::srdo_obd_entry!(gm1)];
+static GAPPED: [ObdEntry; 6] = crate::srdo_obd_entries![g1, g3, gm1, gm3, g_cfg_valid, g_crcs];
+static NO_CFG_VALID: [ObdEntry; 2] = crate::srdo_obd_entries![g1, gm1];
 
 /// The dictionaries' variables are statics shared by all tests here; each
 /// test holds this lock.
