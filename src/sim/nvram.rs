@@ -85,29 +85,32 @@ impl SimNvram {
     }
 }
 
+/// Counts one use off `left` (`None`: no cut pending); a use with nothing
+/// left is the power cut: the memory is `dead` from then on.
+pub(crate) fn spend(left: &mut Option<usize>, dead: &mut bool) -> Result<(), NvFault> {
+    match left {
+        Some(0) => {
+            *dead = true;
+            Err(NvFault)
+        }
+        Some(n) => {
+            *n -= 1;
+            Ok(())
+        }
+        None => Ok(()),
+    }
+}
+
 impl Inner {
     fn call(&mut self) -> Result<(), NvFault> {
         if self.dead {
             return Err(NvFault);
         }
-        if let Some(c) = self.cut_after_calls.as_mut() {
-            if *c == 0 {
-                self.dead = true;
-                return Err(NvFault);
-            }
-            *c -= 1;
-        }
-        Ok(())
+        spend(&mut self.cut_after_calls, &mut self.dead)
     }
 
     fn put(&mut self, at: usize, v: u8) -> Result<(), NvFault> {
-        if let Some(b) = self.cut_after_bytes.as_mut() {
-            if *b == 0 {
-                self.dead = true;
-                return Err(NvFault);
-            }
-            *b -= 1;
-        }
+        spend(&mut self.cut_after_bytes, &mut self.dead)?;
         *self.mem.get_mut(at).ok_or(NvFault)? = v;
         self.writes += 1;
         Ok(())

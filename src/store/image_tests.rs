@@ -1,4 +1,5 @@
 use super::*;
+use crate::sim::nvram::spend;
 
 /// RAM memory with a power cut after `budget` bytes (erased or written)
 /// or after `calls` driver calls; after the cut every call fails.
@@ -25,23 +26,10 @@ impl Ram {
         if self.dead {
             return Err(NvFault);
         }
-        if let Some(c) = self.calls.as_mut() {
-            if *c == 0 {
-                self.dead = true;
-                return Err(NvFault);
-            }
-            *c -= 1;
-        }
-        Ok(())
+        spend(&mut self.calls, &mut self.dead)
     }
     fn byte(&mut self, at: u32, v: u8) -> Result<(), NvFault> {
-        if let Some(b) = self.budget.as_mut() {
-            if *b == 0 {
-                self.dead = true;
-                return Err(NvFault);
-            }
-            *b -= 1;
-        }
+        spend(&mut self.budget, &mut self.dead)?;
         self.mem[at as usize] = v;
         Ok(())
     }
