@@ -430,66 +430,52 @@ mod dynamic {
         receive_config(&od, &srdo);
         assert_eq!(srdo.check_config(&od), Ok(()));
 
-        // CRC first: a changed parameter without a new CRC.
-        set(&od, 0x1301, 3, 21);
-        assert_eq!(
-            srdo.check_config(&od),
-            Err((CopKernel::SrdoCfgCrcError, 0x1301))
-        );
-        set(&od, 0x1301, 3, 20);
-        assert_eq!(srdo.check_config(&od), Ok(()));
+        // CRC first: a changed parameter without a new CRC; disabled SRDOs
+        // are CRC-checked too, and the first bad SRDO is named.
+        for (index, sub, changed, sealed) in [(0x1301, 3, 21, 20), (0x1303, 2, 26, 25)] {
+            set(&od, index, sub, changed);
+            let crc_error = Err((CopKernel::SrdoCfgCrcError, index));
+            assert_eq!(srdo.check_config(&od), crc_error);
+            set(&od, index, sub, sealed);
+            assert_eq!(srdo.check_config(&od), Ok(()));
+        }
 
-        // Disabled SRDOs are CRC-checked too, and the first bad SRDO is named.
-        set(&od, 0x1303, 2, 26);
-        assert_eq!(
-            srdo.check_config(&od),
-            Err((CopKernel::SrdoCfgCrcError, 0x1303))
+        // The codes of the table.
+        let (invalid, timing, id, mapp, length, ok) = (
+            CopKernel::SrdoInvalidCfg,
+            CopKernel::SrdoCfgTimingError,
+            CopKernel::SrdoCfgIdError,
+            CopKernel::SrdoErrorMapp,
+            CopKernel::SrdoLengthExceeded,
+            CopKernel::Successful,
         );
-        set(&od, 0x1303, 2, 25);
-
+        // Dummy entries (index 0x0006) map only with the srdo-dummy-mapping switch.
+        let dummy = if crate::config::SRDO_USE_DUMMY_MAPPING {
+            ok
+        } else {
+            mapp
+        };
         let cases: &[(Writes, CopKernel)] = &[
-            (&[(0x1301, 1, 3)], CopKernel::SrdoInvalidCfg),
-            (&[(0x1301, 2, 0)], CopKernel::SrdoCfgTimingError),
-            (&[(0x1301, 3, 0)], CopKernel::SrdoCfgTimingError),
-            (&[(0x1301, 2, 19)], CopKernel::SrdoCfgTimingError),
+            (&[(0x1301, 1, 3)], invalid),
+            (&[(0x1301, 2, 0)], timing),
+            (&[(0x1301, 3, 0)], timing),
+            (&[(0x1301, 2, 19)], timing),
             // SRVT equal to SCT is allowed (only SRVT > SCT is refused).
-            (&[(0x1301, 3, 25)], CopKernel::Successful),
-            (
-                &[(0x1301, 5, 0x102), (0x1301, 6, 0x103)],
-                CopKernel::SrdoCfgIdError,
-            ),
-            (
-                &[(0x1301, 5, 0x181), (0x1301, 6, 0x182)],
-                CopKernel::SrdoCfgIdError,
-            ),
-            (&[(0x1301, 6, 0x104)], CopKernel::SrdoCfgIdError),
-            (&[(0x1381, 0, 1)], CopKernel::SrdoErrorMapp),
-            (&[(0x1381, 0, 0)], CopKernel::SrdoErrorMapp),
-            (&[(0x1381, 2, 0x6300_0108)], CopKernel::SrdoErrorMapp),
-            (&[(0x1381, 1, 0x6202_0110)], CopKernel::SrdoErrorMapp),
-            (&[(0x1381, 1, 0x6201_0310)], CopKernel::SrdoErrorMapp),
-            (
-                &[(0x1381, 1, 0x6400_0110), (0x1381, 2, 0x6301_0110)],
-                CopKernel::SrdoErrorMapp,
-            ),
-            (&[(0x1381, 1, 0x6400_0210)], CopKernel::SrdoErrorMapp),
+            (&[(0x1301, 3, 25)], ok),
+            (&[(0x1301, 5, 0x102), (0x1301, 6, 0x103)], id),
+            (&[(0x1301, 5, 0x181), (0x1301, 6, 0x182)], id),
+            (&[(0x1301, 6, 0x104)], id),
+            (&[(0x1381, 0, 1)], mapp),
+            (&[(0x1381, 0, 0)], mapp),
+            (&[(0x1381, 2, 0x6300_0108)], mapp),
+            (&[(0x1381, 1, 0x6202_0110)], mapp),
+            (&[(0x1381, 1, 0x6201_0310)], mapp),
+            (&[(0x1381, 1, 0x6400_0110), (0x1381, 2, 0x6301_0110)], mapp),
+            (&[(0x1381, 1, 0x6400_0210)], mapp),
             // Both entries of the pair of length 0 (equal lengths).
-            (
-                &[(0x1381, 1, 0x6300_0100), (0x1381, 2, 0x6301_0100)],
-                CopKernel::SrdoErrorMapp,
-            ),
-            (
-                &[(0x1381, 1, 0x6400_0320), (0x1381, 2, 0x6301_0120)],
-                CopKernel::SrdoErrorMapp,
-            ),
-            (
-                &[(0x1381, 1, 0x0006_0010), (0x1381, 2, 0x0006_0010)],
-                if crate::config::SRDO_USE_DUMMY_MAPPING {
-                    CopKernel::Successful
-                } else {
-                    CopKernel::SrdoErrorMapp
-                },
-            ),
+            (&[(0x1381, 1, 0x6300_0100), (0x1381, 2, 0x6301_0100)], mapp),
+            (&[(0x1381, 1, 0x6400_0320), (0x1381, 2, 0x6301_0120)], mapp),
+            (&[(0x1381, 1, 0x0006_0010), (0x1381, 2, 0x0006_0010)], dummy),
             (
                 &[
                     (0x1381, 0, 6),
@@ -498,7 +484,7 @@ mod dynamic {
                     (0x1381, 5, 0x6500_0118),
                     (0x1381, 6, 0x6500_0218),
                 ],
-                CopKernel::SrdoLengthExceeded,
+                length,
             ),
         ];
         for (writes, code) in cases {
@@ -721,37 +707,26 @@ mod dynamic {
         assert!(!srdo.on_frame(NmtState::Operational, &rx(0x103, &[1, 2], 1012), &mut q));
     }
 
+    /// Every mapped variable of the test dictionary.
+    fn mapped() -> [&'static [AtomicU8]; 8] {
+        [
+            &NORMAL, &INVERTED, &RO_VAR, &NOMAP_VAR, &U32_VAR, &U32_VAR_I, &WIDE_N, &WIDE_I,
+        ]
+    }
+
     /// Every mapped variable of the test dictionary, byte by byte.
     fn variables() -> Vec<u8> {
-        [
-            &NORMAL[..],
-            &INVERTED[..],
-            &RO_VAR[..],
-            &NOMAP_VAR[..],
-            &U32_VAR[..],
-            &U32_VAR_I[..],
-            &WIDE_N[..],
-            &WIDE_I[..],
-        ]
-        .iter()
-        .flat_map(|v| {
-            v.iter()
-                .map(|b| b.load(core::sync::atomic::Ordering::Relaxed))
-        })
-        .collect()
+        mapped()
+            .iter()
+            .flat_map(|v| {
+                v.iter()
+                    .map(|b| b.load(core::sync::atomic::Ordering::Relaxed))
+            })
+            .collect()
     }
 
     fn clear_variables() {
-        for v in [
-            &NORMAL[..],
-            &INVERTED[..],
-            &RO_VAR[..],
-            &NOMAP_VAR[..],
-            &U32_VAR[..],
-            &U32_VAR_I[..],
-            &WIDE_N[..],
-            &WIDE_I[..],
-        ] {
+        for v in mapped() {
             for b in v {
                 b.store(0, core::sync::atomic::Ordering::Relaxed);
             }
