@@ -274,6 +274,27 @@ macro_rules! __obd_srdo_byte_object {
     };
 }
 
+/// A parameter object (0x1301.., 0x1381..) in a module `$m`: the index,
+/// the variables `objects::$vars`, the defaults `objects::$defaults` made
+/// of the arguments and the subindex table (`$count` entries) that
+/// `objects::$subs` lays over both.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __obd_srdo_param_object {
+    ($vis:vis mod $m:ident, $index:expr, $vars:ident, $defaults:ident($($arg:expr),*),
+        $count:ident, $subs:ident) => {
+        #[allow(missing_docs)]
+        $vis mod $m {
+            pub const INDEX: u16 = $index;
+            pub static VARS: $crate::srdo::objects::$vars = $crate::srdo::objects::$vars::new();
+            pub static DEFAULTS: $crate::srdo::objects::$defaults =
+                $crate::srdo::objects::$defaults::new($($arg),*);
+            pub static SUBS: [$crate::od::ObdSubEntry; $crate::srdo::objects::$count] =
+                $crate::srdo::objects::$subs(&VARS, &DEFAULTS);
+        }
+    };
+}
+
 /// `OBD_CREATE_SRDO_GFC_PARAM()`: object 0x1300 in a module `$m`.
 #[macro_export]
 macro_rules! obd_create_srdo_gfc_param {
@@ -287,16 +308,10 @@ macro_rules! obd_create_srdo_gfc_param {
 #[macro_export]
 macro_rules! obd_create_srdo_commu {
     ($vis:vis mod $m:ident, $index:expr, $dir:expr, $sct:expr, $srvt:expr, $cob1:expr, $cob2:expr) => {
-        #[allow(missing_docs)]
-        $vis mod $m {
-            pub const INDEX: u16 = $index;
-            pub static VARS: $crate::srdo::objects::CommuVars =
-                $crate::srdo::objects::CommuVars::new();
-            pub static DEFAULTS: $crate::srdo::objects::CommuDefaults =
-                $crate::srdo::objects::CommuDefaults::new($dir, $sct, $srvt, $cob1, $cob2);
-            pub static SUBS: [$crate::od::ObdSubEntry; $crate::srdo::objects::COMMU_SUBS] =
-                $crate::srdo::objects::commu_subs(&VARS, &DEFAULTS);
-        }
+        $crate::__obd_srdo_param_object!(
+            $vis mod $m, $index, CommuVars, CommuDefaults($dir, $sct, $srvt, $cob1, $cob2),
+            COMMU_SUBS, commu_subs
+        );
     };
 }
 
@@ -306,16 +321,9 @@ macro_rules! obd_create_srdo_commu {
 #[macro_export]
 macro_rules! obd_create_srdo_mapp {
     ($vis:vis mod $m:ident, $index:expr, [$($entry:expr),* $(,)?]) => {
-        #[allow(missing_docs)]
-        $vis mod $m {
-            pub const INDEX: u16 = $index;
-            pub static VARS: $crate::srdo::objects::MappVars =
-                $crate::srdo::objects::MappVars::new();
-            pub static DEFAULTS: $crate::srdo::objects::MappDefaults =
-                $crate::srdo::objects::MappDefaults::new(&[$($entry),*]);
-            pub static SUBS: [$crate::od::ObdSubEntry; $crate::srdo::objects::MAPP_SUBS] =
-                $crate::srdo::objects::mapp_subs(&VARS, &DEFAULTS);
-        }
+        $crate::__obd_srdo_param_object!(
+            $vis mod $m, $index, MappVars, MappDefaults(&[$($entry),*]), MAPP_SUBS, mapp_subs
+        );
     };
 }
 
