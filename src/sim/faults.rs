@@ -788,14 +788,27 @@ impl Sim {
         }
         let reported = (tn > self.last_valid + SCT).then_some(CopKernel::SrdoSctTimeout);
         self.record_pair(tn, gap, reported);
-        let (data, n, i) = self.send_pair(tn);
+        let pair = self.send_pair(tn);
+        let n_seq = self.deliver_accepted(tn, gap, pair);
+        self.free_from = tn + gap;
+        self.report.cycles += 1;
+        n_seq
+    }
+
+    /// Delivers the frames of `pair` (as `send_pair` returns it) at `tn`
+    /// and `gap` later, the consumer accepting the pair; returns the
+    /// sequence number of frame 1.
+    fn deliver_accepted(
+        &mut self,
+        tn: u64,
+        gap: u64,
+        (data, n, i): ([u8; DATA_LEN], CanFrame, CanFrame),
+    ) -> u64 {
         let n_seq = self.act(tn, Act::Deliver(n));
         let i_seq = self.act(tn + gap, Act::Deliver(i));
         let c = self.cycle_at(tn + gap);
         self.expect(c, PH_FRAME, i_seq, Obs::Accept(data));
         self.last_valid = tn;
-        self.free_from = tn + gap;
-        self.report.cycles += 1;
         n_seq
     }
 
@@ -1098,11 +1111,7 @@ impl Sim {
         self.report.cycles += 1;
         if self.rng.one_in(2) {
             // Between two pairs of the producer.
-            self.act(tn, Act::Deliver(n));
-            let i_seq = self.act(tn + gap, Act::Deliver(i));
-            let c = self.cycle_at(tn + gap);
-            self.expect(c, PH_FRAME, i_seq, Obs::Accept(data));
-            self.last_valid = tn;
+            self.deliver_accepted(tn, gap, (data, n, i));
             let tr = tn + gap + self.rng.range(0, COMPACT / 2);
             let tir = tr + self.rng.range(0, SRVT);
             self.act(tr, Act::RogueSend { data: rogue });
@@ -1139,11 +1148,7 @@ impl Sim {
         self.report.cycles += 1;
         match self.rng.range(0, 2) {
             0 => {
-                self.act(tn, Act::Deliver(n));
-                let i_seq = self.act(tn + gap, Act::Deliver(i));
-                let c = self.cycle_at(tn + gap);
-                self.expect(c, PH_FRAME, i_seq, Obs::Accept(data));
-                self.last_valid = tn;
+                self.deliver_accepted(tn, gap, (data, n, i));
                 let tb = tn + gap + self.rng.range(0, COMPACT / 2);
                 let n_burst = RX_CAPACITY + 1 + self.rng.range(0, 7) as usize;
                 let b_seq = self.act(tb, Act::Burst(Some(n_burst)));
