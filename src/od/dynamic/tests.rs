@@ -4,7 +4,9 @@
 use super::*;
 use crate::od::dcf::{EntrySpec, encode, encoded_len};
 
-fn container(entries: &[(u16, u8, u8, &[u8])]) -> Vec<u8> {
+/// A container of `(index, sub, attribute, data)` entries, with or without
+/// the attribute bytes.
+fn container_of(entries: &[(u16, u8, u8, &[u8])], attributes: bool) -> Vec<u8> {
     let specs: Vec<EntrySpec<'_>> = entries
         .iter()
         .map(|(index, sub, attr, data)| EntrySpec {
@@ -14,10 +16,15 @@ fn container(entries: &[(u16, u8, u8, &[u8])]) -> Vec<u8> {
             attr: *attr,
         })
         .collect();
-    let n = encoded_len(&specs, None, true, None).unwrap();
+    let n = encoded_len(&specs, None, attributes, None).unwrap();
     let mut out = vec![0u8; n];
-    encode(&specs, None, true, None, &mut out).unwrap();
+    encode(&specs, None, attributes, None, &mut out).unwrap();
     out
+}
+
+/// A container with attribute bytes.
+fn container(entries: &[(u16, u8, u8, &[u8])]) -> Vec<u8> {
+    container_of(entries, true)
 }
 
 fn plan<'a>(bytes: &'a [u8]) -> Result<Plan<'a>, CopKernel> {
@@ -97,35 +104,11 @@ fn types_follow_the_attribute_or_seed_table_2() {
 
 #[test]
 fn new_objects_without_attributes_are_refused() {
-    let specs = [EntrySpec {
-        index: 0x2100,
-        sub: 0,
-        data: &[1],
-        attr: 0x70,
-    }];
-    let n = encoded_len(&specs, None, false, None).unwrap();
-    let mut out = vec![0u8; n];
-    encode(&specs, None, false, None, &mut out).unwrap();
-    assert_eq!(plan(&out).unwrap_err(), CopKernel::DynInvalidConfig);
+    let new = container_of(&[(0x2100, 0, 0x70, &[1])], false);
+    assert_eq!(plan(&new).unwrap_err(), CopKernel::DynInvalidConfig);
     // Existing objects and network variables need none.
-    let specs = [
-        EntrySpec {
-            index: 0x1017,
-            sub: 0,
-            data: &[1, 0],
-            attr: 0,
-        },
-        EntrySpec {
-            index: 0xA4C0,
-            sub: 1,
-            data: &[1],
-            attr: 0,
-        },
-    ];
-    let n = encoded_len(&specs, None, false, None).unwrap();
-    let mut out = vec![0u8; n];
-    encode(&specs, None, false, None, &mut out).unwrap();
-    assert!(plan(&out).is_ok());
+    let existing = container_of(&[(0x1017, 0, 0, &[1, 0]), (0xA4C0, 1, 0, &[1])], false);
+    assert!(plan(&existing).is_ok());
 }
 
 #[test]
