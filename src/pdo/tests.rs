@@ -68,6 +68,13 @@ fn fresh() -> (std::sync::MutexGuard<'static, ()>, ObjectDictionary) {
     (g, od)
 }
 
+/// [`fresh`] with TPDO 1 valid at 0x181.
+fn tpdo_1_valid() -> (std::sync::MutexGuard<'static, ()>, ObjectDictionary) {
+    let (g, od) = fresh();
+    od.poke_uint(0x1800, 1, 0x181).unwrap();
+    (g, od)
+}
+
 const BITS: Rules = Rules {
     bit_mapping: true,
     dummy: true,
@@ -207,8 +214,7 @@ fn write(od: &ObjectDictionary, index: u16, sub: u8, v: u64) -> Result<(), OdErr
 
 #[test]
 fn cia301_mapping_procedure() {
-    let (_g, od) = fresh();
-    od.poke_uint(0x1800, 1, 0x181).unwrap();
+    let (_g, od) = tpdo_1_valid();
     // Step 1 missing: the PDO is valid, the mapping stays as it is.
     assert_eq!(write(&od, 0x1A00, 0, 0), Err(refuse::STATE));
     assert_eq!(refuse::STATE.abort, 0x0800_0022);
@@ -241,9 +247,7 @@ fn cia301_mapping_procedure() {
 
 #[test]
 fn communication_parameter_rules() {
-    let (_g, od) = fresh();
-    // TPDO valid with 0x181.
-    od.poke_uint(0x1800, 1, 0x181).unwrap();
+    let (_g, od) = tpdo_1_valid();
     // CiA 301 §7.5.2.37: the identifier does not change while valid.
     assert_eq!(write(&od, 0x1800, 1, 0x182), Err(refuse::INVALID));
     assert_eq!(refuse::INVALID.abort, 0x0609_0030);
