@@ -132,6 +132,45 @@ macro_rules! default_is_new {
 }
 pub(crate) use default_is_new;
 
+/// Declares the two blocks of a parameter object (PDO and SRDO
+/// communication and mapping parameters) from one list of its variable
+/// subindices and their sizes in bytes, so that a variable and its default
+/// cannot differ in size: `$vars`, the variables (`[AtomicU8; N]` each,
+/// public, zeroed by `new()` and `Default`), and `$defaults`, their
+/// defaults (`[u8; N]` each, private; the declaring module writes the
+/// constructor).
+macro_rules! param_blocks {
+    (
+        $(#[$vmeta:meta])* pub struct $vars:ident;
+        $(#[$dmeta:meta])* pub struct $defaults:ident;
+        { $($(#[$fmeta:meta])* $field:ident: $len:expr,)+ }
+    ) => {
+        $(#[$vmeta])*
+        #[derive(Debug)]
+        pub struct $vars {
+            $($(#[$fmeta])* pub $field: [::core::sync::atomic::AtomicU8; $len],)+
+        }
+
+        impl $vars {
+            /// Zeroed variables (the defaults apply at reset communication).
+            pub const fn new() -> Self {
+                $vars {
+                    $($field: $crate::od::decl::zeroed(),)+
+                }
+            }
+        }
+
+        $crate::od::decl::default_is_new!($vars);
+
+        $(#[$dmeta])*
+        #[derive(Debug)]
+        pub struct $defaults {
+            $($field: [u8; $len],)+
+        }
+    };
+}
+pub(crate) use param_blocks;
+
 /// Declares a one-subindex object (subindex 0) whose value is a RAM
 /// variable: `static $subs: [ObdSubEntry; 1]` and the variable `static
 /// $var: [AtomicU8; size_of::<$t>()]`, with the default `$default` (of the

@@ -42,8 +42,6 @@ use core::sync::atomic::AtomicU8;
 use crate::config::SRDO_MAX_MAPPENTRIES;
 use crate::od::{Access, DataType, ObdSubEntry};
 
-crate::od::decl::default_is_new!(CommuVars, MappVars);
-
 /// Subindices of a communication parameter (0..=6).
 pub const COMMU_SUBS: usize = 7;
 /// Subindices of a mapping parameter (0..=`SRDO_MAX_MAPPENTRIES`).
@@ -52,42 +50,23 @@ pub const MAPP_SUBS: usize = 1 + SRDO_MAX_MAPPENTRIES;
 /// Fills arrays of subindex descriptions before each element is set.
 const PLACEHOLDER: ObdSubEntry = ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[0]);
 
-/// The variables of one communication parameter (CPU byte order).
-#[derive(Debug)]
-pub struct CommuVars {
-    /// Sub 1, information direction.
-    pub direction: [AtomicU8; 1],
-    /// Sub 2, refresh time / SCT in ms.
-    pub sct: [AtomicU8; 2],
-    /// Sub 3, SRVT in ms.
-    pub srvt: [AtomicU8; 1],
-    /// Sub 5, COB-ID 1.
-    pub cob1: [AtomicU8; 4],
-    /// Sub 6, COB-ID 2.
-    pub cob2: [AtomicU8; 4],
-}
-
-impl CommuVars {
-    /// All zero (the stack loads the defaults at reset communication).
-    pub const fn new() -> Self {
-        CommuVars {
-            direction: crate::od::decl::zeroed(),
-            sct: crate::od::decl::zeroed(),
-            srvt: crate::od::decl::zeroed(),
-            cob1: crate::od::decl::zeroed(),
-            cob2: crate::od::decl::zeroed(),
-        }
+crate::od::decl::param_blocks! {
+    /// The variables of one communication parameter (CPU byte order).
+    pub struct CommuVars;
+    /// Default values of one communication parameter (CPU byte order).
+    pub struct CommuDefaults;
+    {
+        /// Sub 1, information direction.
+        direction: 1,
+        /// Sub 2, refresh time / SCT in ms.
+        sct: 2,
+        /// Sub 3, SRVT in ms.
+        srvt: 1,
+        /// Sub 5, COB-ID 1.
+        cob1: 4,
+        /// Sub 6, COB-ID 2.
+        cob2: 4,
     }
-}
-
-/// Default values of one communication parameter (CPU byte order).
-#[derive(Debug)]
-pub struct CommuDefaults {
-    direction: [u8; 1],
-    sct: [u8; 2],
-    srvt: [u8; 1],
-    cob1: [u8; 4],
-    cob2: [u8; 4],
 }
 
 impl CommuDefaults {
@@ -120,30 +99,17 @@ pub const fn commu_subs(
     ]
 }
 
-/// The variables of one mapping parameter (CPU byte order).
-#[derive(Debug)]
-pub struct MappVars {
-    /// Sub 0, number of mapped entries.
-    pub count: [AtomicU8; 1],
-    /// Subs 1.., four bytes each.
-    pub entries: [AtomicU8; 4 * SRDO_MAX_MAPPENTRIES],
-}
-
-impl MappVars {
-    /// All zero.
-    pub const fn new() -> Self {
-        MappVars {
-            count: crate::od::decl::zeroed(),
-            entries: crate::od::decl::zeroed(),
-        }
+crate::od::decl::param_blocks! {
+    /// The variables of one mapping parameter (CPU byte order).
+    pub struct MappVars;
+    /// Default values of one mapping parameter (CPU byte order).
+    pub struct MappDefaults;
+    {
+        /// Sub 0, number of mapped entries.
+        count: 1,
+        /// Subs 1.., four bytes each.
+        entries: 4 * SRDO_MAX_MAPPENTRIES,
     }
-}
-
-/// Default values of one mapping parameter (CPU byte order).
-#[derive(Debug)]
-pub struct MappDefaults {
-    count: [u8; 1],
-    entries: [u8; 4 * SRDO_MAX_MAPPENTRIES],
 }
 
 impl MappDefaults {
