@@ -30,24 +30,30 @@ const fn part(buf: &'static [AtomicU8], from: usize, len: usize) -> &'static [At
     buf.split_at(from).1.split_at(len).0
 }
 
-const fn u8_var(sub: u8, buf: &'static [AtomicU8], at: usize) -> ObdSubEntry {
+/// Subindex `sub`, a PRW variable of type `typ` over the bytes of `buf`
+/// from `at` on, as many as `default` has.
+const fn var_in(
+    sub: u8,
+    typ: DataType,
+    buf: &'static [AtomicU8],
+    at: usize,
+    default: &'static [u8],
+) -> ObdSubEntry {
     ObdSubEntry::ram(
         sub,
-        DataType::UInt8,
+        typ,
         Access::PRW,
-        part(buf, at, 1),
-        Some(&[0]),
+        part(buf, at, default.len()),
+        Some(default),
     )
 }
 
+const fn u8_var(sub: u8, buf: &'static [AtomicU8], at: usize) -> ObdSubEntry {
+    var_in(sub, DataType::UInt8, buf, at, &[0])
+}
+
 const fn u16_var(sub: u8, buf: &'static [AtomicU8], at: usize) -> ObdSubEntry {
-    ObdSubEntry::ram(
-        sub,
-        DataType::UInt16,
-        Access::PRW,
-        part(buf, at, 2),
-        Some(&[0, 0]),
-    )
+    var_in(sub, DataType::UInt16, buf, at, &[0, 0])
 }
 
 /// Subindices 1..4: UNSIGNED8 over bytes 0..3 of `buf`.
@@ -418,6 +424,13 @@ mod dynamic {
         seal(od, srdo);
     }
 
+    /// [`setup`] with [`receive_config`] applied.
+    fn setup_receiving() -> (std::sync::MutexGuard<'static, ()>, ObjectDictionary, Srdo) {
+        let (g, od, srdo) = setup();
+        receive_config(&od, &srdo);
+        (g, od, srdo)
+    }
+
     fn operational(od: &ObjectDictionary, srdo: &mut Srdo, now: u32) {
         srdo.on_state(od, NmtState::Operational, 5, Ticks(now));
         assert!(srdo.is_running());
@@ -426,8 +439,7 @@ mod dynamic {
     // req: M-2.8.2-CHECK, SB-2-ORDER, SB-2-MAPPING, SB-2-LENGTH, M-1.1-COBID
     #[test]
     fn configuration_check_codes_in_order() {
-        let (_g, od, srdo) = setup();
-        receive_config(&od, &srdo);
+        let (_g, od, srdo) = setup_receiving();
         assert_eq!(srdo.check_config(&od), Ok(()));
 
         // CRC first: a changed parameter without a new CRC; disabled SRDOs
@@ -440,66 +452,75 @@ mod dynamic {
             assert_eq!(srdo.check_config(&od), Ok(()));
         }
 
-        // The codes of the table.
-        let (invalid, timing, id, mapp, length, ok) = (
-            CopKernel::SrdoInvalidCfg,
-            CopKernel::SrdoCfgTimingError,
-            CopKernel::SrdoCfgIdError,
-            CopKernel::SrdoErrorMapp,
-            CopKernel::SrdoLengthExceeded,
-            CopKernel::Successful,
-        );
         // Dummy entries (index 0x0006) map only with the srdo-dummy-mapping switch.
         let dummy = if crate::config::SRDO_USE_DUMMY_MAPPING {
-            ok
+            CopKernel::Successful
         } else {
-            mapp
+            CopKernel::SrdoErrorMapp
         };
-        let cases: &[(Writes, CopKernel)] = &[
-            (&[(0x1301, 1, 3)], invalid),
-            (&[(0x1301, 2, 0)], timing),
-            (&[(0x1301, 3, 0)], timing),
-            (&[(0x1301, 2, 19)], timing),
-            // SRVT equal to SCT is allowed (only SRVT > SCT is refused).
-            (&[(0x1301, 3, 25)], ok),
-            (&[(0x1301, 5, 0x102), (0x1301, 6, 0x103)], id),
-            (&[(0x1301, 5, 0x181), (0x1301, 6, 0x182)], id),
-            (&[(0x1301, 6, 0x104)], id),
-            (&[(0x1381, 0, 1)], mapp),
-            (&[(0x1381, 0, 0)], mapp),
-            (&[(0x1381, 2, 0x6300_0108)], mapp),
-            (&[(0x1381, 1, 0x6202_0110)], mapp),
-            (&[(0x1381, 1, 0x6201_0310)], mapp),
-            (&[(0x1381, 1, 0x6400_0110), (0x1381, 2, 0x6301_0110)], mapp),
-            (&[(0x1381, 1, 0x6400_0210)], mapp),
-            // Both entries of the pair of length 0 (equal lengths).
-            (&[(0x1381, 1, 0x6300_0100), (0x1381, 2, 0x6301_0100)], mapp),
-            (&[(0x1381, 1, 0x6400_0320), (0x1381, 2, 0x6301_0120)], mapp),
-            (&[(0x1381, 1, 0x0006_0010), (0x1381, 2, 0x0006_0010)], dummy),
+        // Each code with the configurations (writes into a good one) that
+        // give it.
+        let cases: &[(CopKernel, &[Writes])] = &[
+            (CopKernel::SrdoInvalidCfg, &[&[(0x1301, 1, 3)]]),
             (
+                CopKernel::SrdoCfgTimingError,
+                &[&[(0x1301, 2, 0)], &[(0x1301, 3, 0)], &[(0x1301, 2, 19)]],
+            ),
+            // SRVT equal to SCT is allowed (only SRVT > SCT is refused).
+            (CopKernel::Successful, &[&[(0x1301, 3, 25)]]),
+            (
+                CopKernel::SrdoCfgIdError,
                 &[
+                    &[(0x1301, 5, 0x102), (0x1301, 6, 0x103)],
+                    &[(0x1301, 5, 0x181), (0x1301, 6, 0x182)],
+                    &[(0x1301, 6, 0x104)],
+                ],
+            ),
+            (
+                CopKernel::SrdoErrorMapp,
+                &[
+                    &[(0x1381, 0, 1)],
+                    &[(0x1381, 0, 0)],
+                    &[(0x1381, 2, 0x6300_0108)],
+                    &[(0x1381, 1, 0x6202_0110)],
+                    &[(0x1381, 1, 0x6201_0310)],
+                    &[(0x1381, 1, 0x6400_0110), (0x1381, 2, 0x6301_0110)],
+                    &[(0x1381, 1, 0x6400_0210)],
+                    // Both entries of the pair of length 0 (equal lengths).
+                    &[(0x1381, 1, 0x6300_0100), (0x1381, 2, 0x6301_0100)],
+                    &[(0x1381, 1, 0x6400_0320), (0x1381, 2, 0x6301_0120)],
+                ],
+            ),
+            (
+                dummy,
+                &[&[(0x1381, 1, 0x0006_0010), (0x1381, 2, 0x0006_0010)]],
+            ),
+            (
+                CopKernel::SrdoLengthExceeded,
+                &[&[
                     (0x1381, 0, 6),
                     (0x1381, 3, 0x6400_0320),
                     (0x1381, 4, 0x6400_0420),
                     (0x1381, 5, 0x6500_0118),
                     (0x1381, 6, 0x6500_0218),
-                ],
-                length,
+                ]],
             ),
         ];
-        for (writes, code) in cases {
-            od.restore_defaults(0x1000, 0x1FFF);
-            receive_config(&od, &srdo);
-            for (i, s, v) in writes.iter().copied() {
-                set(&od, i, s, v);
+        for (code, configurations) in cases {
+            for writes in configurations.iter() {
+                od.restore_defaults(0x1000, 0x1FFF);
+                receive_config(&od, &srdo);
+                for (i, s, v) in writes.iter().copied() {
+                    set(&od, i, s, v);
+                }
+                seal(&od, &srdo);
+                let expected = if *code == CopKernel::Successful {
+                    Ok(())
+                } else {
+                    Err((*code, 0x1301))
+                };
+                assert_eq!(srdo.check_config(&od), expected, "after {writes:x?}");
             }
-            seal(&od, &srdo);
-            let expected = if *code == CopKernel::Successful {
-                Ok(())
-            } else {
-                Err((*code, 0x1301))
-            };
-            assert_eq!(srdo.check_config(&od), expected, "after {writes:x?}");
         }
     }
 
@@ -509,8 +530,7 @@ mod dynamic {
     // req: SB-2-MAPPING, SB-2-LENGTH, M-2.4-GRANULARITY, SB-3-CRC-VECTORS
     #[test]
     fn full_mapping_at_the_limits_passes() {
-        let (_g, od, srdo) = setup();
-        receive_config(&od, &srdo);
+        let (_g, od, srdo) = setup_receiving();
         let pairs = u8::try_from(SRDO_MAX_MAPPENTRIES / 2).unwrap();
         let bits = 64 / u32::from(pairs);
         assert_eq!(bits, u32::from(SRDO_GRANULARITY), "entries of one granule");
@@ -567,8 +587,7 @@ mod dynamic {
     // req: SB-2-MAPPING
     #[test]
     fn attached_variables_of_the_wrong_size_are_refused() {
-        let (_g, od, srdo) = setup();
-        receive_config(&od, &srdo);
+        let (_g, od, srdo) = setup_receiving();
         set(&od, 0x1381, 1, 0x6600_0120);
         set(&od, 0x1381, 2, 0x6600_0220);
         seal(&od, &srdo);
@@ -626,8 +645,7 @@ mod dynamic {
     // req: SB-2-DUPLICATE, M-2.4-GRANULARITY
     #[test]
     fn duplicate_cob_ids_and_granularity() {
-        let (_g, od, srdo) = setup();
-        receive_config(&od, &srdo);
+        let (_g, od, srdo) = setup_receiving();
         // SRDO 0x1302 transmits 0x6200 sub 1/2 (U8) on the same COB-IDs.
         set(&od, 0x1302, 1, 1);
         set(&od, 0x1302, 5, 0x101);
@@ -662,8 +680,7 @@ mod dynamic {
 
     #[test]
     fn mapp_param_reports_the_variables() {
-        let (_g, od, srdo) = setup();
-        receive_config(&od, &srdo);
+        let (_g, od, srdo) = setup_receiving();
         let p = srdo.mapp_param(&od, 0x1301).unwrap();
         assert_eq!(p.count, 2);
         assert!(core::ptr::eq(
@@ -680,8 +697,7 @@ mod dynamic {
     // req: M-2.5.2-RECEIVE
     #[test]
     fn valid_pair_writes_both_variables_and_reports() {
-        let (_g, od, mut srdo) = setup();
-        receive_config(&od, &srdo);
+        let (_g, od, mut srdo) = setup_receiving();
         operational(&od, &mut srdo, 1000);
         let mut q = ActionQueue::new();
         assert!(srdo.on_frame(
@@ -799,8 +815,7 @@ mod dynamic {
     // req: SB-5-NO-WRITE-ON-ERROR, M-2.5.3-STATUS
     #[test]
     fn errors_leave_variables_untouched_and_set_status() {
-        let (_g, od, mut srdo) = setup();
-        receive_config(&od, &srdo);
+        let (_g, od, mut srdo) = setup_receiving();
         set(&od, 0x6201, 1, 0x5555);
         set(&od, 0x6301, 1, 0xAAAA);
         operational(&od, &mut srdo, 0);
@@ -855,8 +870,7 @@ mod dynamic {
     // req: M-1.1-SRVT, M-1.1-SCT
     #[test]
     fn srvt_boundary_and_sct_boundary() {
-        let (_g, od, mut srdo) = setup();
-        receive_config(&od, &srdo);
+        let (_g, od, mut srdo) = setup_receiving();
         operational(&od, &mut srdo, 0);
         // Delivers frames one by one like the stack (queue drained between).
         let feed = |srdo: &mut Srdo, frames: &[(u16, [u8; 2], u32)]| {
@@ -974,8 +988,7 @@ mod dynamic {
     #[test]
     fn srvt_checked_before_second_frame_both_settings() {
         for switch in [false, true] {
-            let (_g, od, mut srdo) = setup();
-            receive_config(&od, &srdo);
+            let (_g, od, mut srdo) = setup_receiving();
             operational(&od, &mut srdo, 0);
             let mut q = ActionQueue::new();
             srdo.on_frame(NmtState::Operational, &rx(0x101, &[1, 0], 10), &mut q);

@@ -1247,23 +1247,20 @@ mod tests {
         // and the CRC in bytes 1..2 (little-endian); the receiver answers
         // 5 / 1 (A1). Download: the server confirms, the client ends;
         // upload: the other way round.
-        let acks = [
-            ([0xA2, 0x05, 0x06, 0, 0, 0, 0, 0], 5, 6),
-            ([0xA2, 0x7F, 0x7F, 0, 0, 0, 0, 0], 127, 127),
-        ];
-        for (bytes, ackseq, blksize) in acks {
+        let ack = |bytes, ackseq, blksize| {
             server(bytes, ServerFrame::BlockDownloadAck { ackseq, blksize });
             client(bytes, ClientFrame::BlockUploadAck { ackseq, blksize });
-        }
-        // n = 3: 0xCD; n = 6: 0xD9.
-        let ends = [
-            ([0xCD, 0x34, 0x12, 0, 0, 0, 0, 0], 3, 0x1234),
-            ([0xD9, 0xC3, 0x31, 0, 0, 0, 0, 0], 6, 0x31C3),
-        ];
-        for (bytes, unused, crc) in ends {
+        };
+        let end = |bytes, unused, crc| {
             client(bytes, ClientFrame::BlockDownloadEnd { unused, crc });
             server(bytes, ServerFrame::BlockUploadEnd { unused, crc });
-        }
+        };
+        ack([0xA2, 0x05, 0x06, 0, 0, 0, 0, 0], 5, 6);
+        // n = 3: 0xCD.
+        end([0xCD, 0x34, 0x12, 0, 0, 0, 0, 0], 3, 0x1234);
+        ack([0xA2, 0x7F, 0x7F, 0, 0, 0, 0, 0], 127, 127);
+        // n = 6: 0xD9.
+        end([0xD9, 0xC3, 0x31, 0, 0, 0, 0, 0], 6, 0x31C3);
         let done = [0xA1, 0, 0, 0, 0, 0, 0, 0];
         server(done, ServerFrame::BlockDownloadEndResponse);
         client(done, ClientFrame::BlockUploadEndResponse);
