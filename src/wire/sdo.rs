@@ -701,21 +701,23 @@ impl ClientFrame {
 
     /// Decodes 8 data bytes.
     pub fn decode(data: &[u8; FRAME_LEN]) -> Result<Self, DecodeError> {
-        let mux = Multiplexer::from_frame(data);
-        let toggle = data[0] & TOGGLE != 0;
         Ok(match data[0] >> 5 {
             CCS_DOWNLOAD_SEGMENT => {
                 let (toggle, data, last) = decode_segment(data);
                 ClientFrame::DownloadSegment { toggle, data, last }
             }
             CCS_INITIATE_DOWNLOAD => ClientFrame::InitiateDownload {
-                mux,
+                mux: Multiplexer::from_frame(data),
                 payload: Initiate::decode(data),
             },
-            CCS_INITIATE_UPLOAD => ClientFrame::InitiateUpload { mux },
-            CCS_UPLOAD_SEGMENT => ClientFrame::UploadSegment { toggle },
+            CCS_INITIATE_UPLOAD => ClientFrame::InitiateUpload {
+                mux: Multiplexer::from_frame(data),
+            },
+            CCS_UPLOAD_SEGMENT => ClientFrame::UploadSegment {
+                toggle: data[0] & TOGGLE != 0,
+            },
             CS_ABORT => ClientFrame::Abort {
-                mux,
+                mux: Multiplexer::from_frame(data),
                 code: abort_code(data),
             },
             CCS_BLOCK_UPLOAD => match ReceiverBlock::decode(data) {
@@ -792,21 +794,23 @@ impl ServerFrame {
 
     /// Decodes 8 data bytes.
     pub fn decode(data: &[u8; FRAME_LEN]) -> Result<Self, DecodeError> {
-        let mux = Multiplexer::from_frame(data);
-        let toggle = data[0] & TOGGLE != 0;
         Ok(match data[0] >> 5 {
             SCS_UPLOAD_SEGMENT => {
                 let (toggle, data, last) = decode_segment(data);
                 ServerFrame::UploadSegmentResponse { toggle, data, last }
             }
-            SCS_DOWNLOAD_SEGMENT => ServerFrame::DownloadSegmentResponse { toggle },
+            SCS_DOWNLOAD_SEGMENT => ServerFrame::DownloadSegmentResponse {
+                toggle: data[0] & TOGGLE != 0,
+            },
             SCS_INITIATE_UPLOAD => ServerFrame::InitiateUploadResponse {
-                mux,
+                mux: Multiplexer::from_frame(data),
                 payload: Initiate::decode(data),
             },
-            SCS_INITIATE_DOWNLOAD => ServerFrame::InitiateDownloadResponse { mux },
+            SCS_INITIATE_DOWNLOAD => ServerFrame::InitiateDownloadResponse {
+                mux: Multiplexer::from_frame(data),
+            },
             CS_ABORT => ServerFrame::Abort {
-                mux,
+                mux: Multiplexer::from_frame(data),
                 code: abort_code(data),
             },
             SCS_BLOCK_DOWNLOAD => match ReceiverBlock::decode(data) {
