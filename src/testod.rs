@@ -38,22 +38,8 @@ crate::od_ram!(static S2001, V2001: i16 = 0 => Int16, PRW, range(-100, 100));
 crate::od_ram!(static S2002, V2002: u32 => UInt32, PRW);
 static S2003: [ObdSubEntry; 1] = [ObdSubEntry::ram_string(0, Access::RW, &V2003, c"hello")];
 static S2004: [ObdSubEntry; 1] = [ObdSubEntry::rom_string(0, Access::R, b"constant text")];
-static S2005: [ObdSubEntry; 1] = [ObdSubEntry::var(
-    0,
-    DataType::UInt32,
-    Access::PRW,
-    &E2005,
-    4,
-    None,
-)];
-static S2006: [ObdSubEntry; 1] = [ObdSubEntry::var(
-    0,
-    DataType::Domain,
-    Access::RW,
-    &E2006,
-    0,
-    None,
-)];
+static S2005: [ObdSubEntry; 1] = decl::var_object(DataType::UInt32, Access::PRW, &E2005, 4);
+static S2006: [ObdSubEntry; 1] = decl::var_object(DataType::Domain, Access::RW, &E2006, 0);
 static S2007: [ObdSubEntry; 2] = [
     ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[8]),
     ObdSubEntry::ram_array(1, DataType::UInt8, Access::PRW, &V2007, 1, Some(&[0])),

@@ -75,15 +75,7 @@ macro_rules! node_od {
             cop::obd_create_srdo_cfg_valid!(pub mod cfg_valid);
             cop::obd_create_srdo_crc!(pub mod crcs, [0, 0]);
 
-            static GENERIC: [ObdEntry; 7] = [
-                cop::srdo_obd_entry!(gfc),
-                cop::srdo_obd_entry!(c1),
-                cop::srdo_obd_entry!(c2),
-                cop::srdo_obd_entry!(m1),
-                cop::srdo_obd_entry!(m2),
-                cop::srdo_obd_entry!(cfg_valid),
-                cop::srdo_obd_entry!(crcs),
-            ];
+            static GENERIC: [ObdEntry; 7] = cop::srdo_obd_entries![gfc, c1, c2, m1, m2, cfg_valid, crcs];
             static DEVICE: [ObdEntry; 4] = [
                 ObdEntry::new(0x6200, &S6200, None),
                 ObdEntry::new(0x6201, &S6201, None),

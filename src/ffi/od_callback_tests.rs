@@ -54,14 +54,7 @@ static SMALL_BUF: [AtomicU8; 4] = decl::zeroed();
 static BIG_BUF: [AtomicU8; 16] = decl::zeroed();
 static DOMAIN: ObdVarEntry = ObdVarEntry::new();
 crate::od_ram!(static S2000, V: u8 = 0 => UInt8, RW);
-static S2001: [ObdSubEntry; 1] = [ObdSubEntry::var(
-    0,
-    DataType::Domain,
-    Access::RW,
-    &DOMAIN,
-    0,
-    None,
-)];
+static S2001: [ObdSubEntry; 1] = decl::var_object(DataType::Domain, Access::RW, &DOMAIN, 0);
 static MAN: [ObdEntry; 2] = [
     ObdEntry::new(0x2000, &S2000, Some(record)),
     ObdEntry::new(0x2001, &S2001, Some(record)),

@@ -154,6 +154,11 @@ mod tests {
         ErrorControl { node, state }
     }
 
+    /// The action the consumer queues for `event` of `node`.
+    fn hbc(node: u8, event: ErrCtrlEvent) -> Option<crate::event::Action> {
+        Some(crate::event::Action::Emit(Event::Hbc(node, event)))
+    }
+
     #[test]
     fn supervision_starts_with_first_heartbeat() {
         let mut c = HeartbeatConsumer::new();
@@ -162,40 +167,16 @@ mod tests {
         // Nothing is reported before the first heartbeat, however long.
         assert!(c.poll(Ticks(1_000_000), &mut q));
         c.on_heartbeat(hb(5, 0x7F), Ticks(0), &mut q);
-        assert_eq!(
-            q.pop(),
-            Some(crate::event::Action::Emit(Event::Hbc(
-                5,
-                ErrCtrlEvent::HbcConnected
-            )))
-        );
+        assert_eq!(q.pop(), hbc(5, ErrCtrlEvent::HbcConnected));
         // Exactly at the limit is still in time; later is lost, once.
         assert!(c.poll(Ticks(1000), &mut q));
         assert!(!c.poll(Ticks(1001), &mut q));
-        assert_eq!(
-            q.pop(),
-            Some(crate::event::Action::Emit(Event::Hbc(
-                5,
-                ErrCtrlEvent::HbcConnectionLost
-            )))
-        );
+        assert_eq!(q.pop(), hbc(5, ErrCtrlEvent::HbcConnectionLost));
         assert!(c.poll(Ticks(5000), &mut q));
         c.on_heartbeat(hb(5, 0x05), Ticks(5000), &mut q);
-        assert_eq!(
-            q.pop(),
-            Some(crate::event::Action::Emit(Event::Hbc(
-                5,
-                ErrCtrlEvent::HbcConnected
-            )))
-        );
+        assert_eq!(q.pop(), hbc(5, ErrCtrlEvent::HbcConnected));
         c.on_heartbeat(hb(5, 0x7F), Ticks(5500), &mut q);
-        assert_eq!(
-            q.pop(),
-            Some(crate::event::Action::Emit(Event::Hbc(
-                5,
-                ErrCtrlEvent::HbcNodeStateChanged
-            )))
-        );
+        assert_eq!(q.pop(), hbc(5, ErrCtrlEvent::HbcNodeStateChanged));
         assert_eq!(c.node_state(5), Some(0x7F));
     }
 

@@ -30,6 +30,30 @@
 
 use core::sync::atomic::{AtomicU8, Ordering};
 
+use crate::od::{Access, DataType, ObdSubEntry, ObdVarEntry};
+
+/// The subindex table of a one-value object: subindex 0 alone, the RAM
+/// variable `var` without default (it keeps what it holds at a reset).
+pub const fn ram_object(
+    typ: DataType,
+    access: Access,
+    var: &'static [AtomicU8],
+) -> [ObdSubEntry; 1] {
+    [ObdSubEntry::ram(0, typ, access, var, None)]
+}
+
+/// The subindex table of a one-value object whose variable the application
+/// attaches (USERDEF / DOMAIN): subindex 0 alone, `size` bytes, without
+/// default.
+pub const fn var_object(
+    typ: DataType,
+    access: Access,
+    entry: &'static ObdVarEntry,
+    size: u32,
+) -> [ObdSubEntry; 1] {
+    [ObdSubEntry::var(0, typ, access, entry, size, None)]
+}
+
 /// A variable of `N` bytes, all zero.
 pub const fn zeroed<const N: usize>() -> [AtomicU8; N] {
     [const { AtomicU8::new(0) }; N]
@@ -108,6 +132,45 @@ macro_rules! default_is_new {
 }
 pub(crate) use default_is_new;
 
+/// Declares the two blocks of a parameter object (PDO and SRDO
+/// communication and mapping parameters) from one list of its variable
+/// subindices and their sizes in bytes, so that a variable and its default
+/// cannot differ in size: `$vars`, the variables (`[AtomicU8; N]` each,
+/// public, zeroed by `new()` and `Default`), and `$defaults`, their
+/// defaults (`[u8; N]` each, private; the declaring module writes the
+/// constructor).
+macro_rules! param_blocks {
+    (
+        $(#[$vmeta:meta])* pub struct $vars:ident;
+        $(#[$dmeta:meta])* pub struct $defaults:ident;
+        { $($(#[$fmeta:meta])* $field:ident: $len:expr,)+ }
+    ) => {
+        $(#[$vmeta])*
+        #[derive(Debug)]
+        pub struct $vars {
+            $($(#[$fmeta])* pub $field: [::core::sync::atomic::AtomicU8; $len],)+
+        }
+
+        impl $vars {
+            /// Zeroed variables (the defaults apply at reset communication).
+            pub const fn new() -> Self {
+                $vars {
+                    $($field: $crate::od::decl::zeroed(),)+
+                }
+            }
+        }
+
+        $crate::od::decl::default_is_new!($vars);
+
+        $(#[$dmeta])*
+        #[derive(Debug)]
+        pub struct $defaults {
+            $($field: [u8; $len],)+
+        }
+    };
+}
+pub(crate) use param_blocks;
+
 /// Declares a one-subindex object (subindex 0) whose value is a RAM
 /// variable: `static $subs: [ObdSubEntry; 1]` and the variable `static
 /// $var: [AtomicU8; size_of::<$t>()]`, with the default `$default` (of the
@@ -157,13 +220,11 @@ macro_rules! od_ram {
     ($vis:vis static $subs:ident, $var:ident: $t:ty => $typ:ident, $access:ident) => {
         $vis static $var: [::core::sync::atomic::AtomicU8; ::core::mem::size_of::<$t>()] =
             $crate::od::decl::zeroed();
-        $vis static $subs: [$crate::od::ObdSubEntry; 1] = [$crate::od::ObdSubEntry::ram(
-            0,
+        $vis static $subs: [$crate::od::ObdSubEntry; 1] = $crate::od::decl::ram_object(
             $crate::od::DataType::$typ,
             $crate::od::Access::$access,
             &$var,
-            None,
-        )];
+        );
     };
 }
 

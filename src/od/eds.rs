@@ -569,34 +569,10 @@ mod tests {
     static R32: [AtomicU8; 4] = decl::init(1.5f32.to_bits().to_ne_bytes());
     static U16: [AtomicU8; 2] = decl::init(7u16.to_ne_bytes());
     static TEXT: [AtomicU8; 4] = decl::init([0x61, 0, 0x62, 0]);
-    static S2010: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt24,
-        Access::RW,
-        &I24,
-        None,
-    )];
-    static S2011: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt32,
-        Access::RW,
-        &R32,
-        None,
-    )];
-    static S2012: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt16,
-        Access::RW,
-        &U16,
-        None,
-    )];
-    static S2013: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::Domain,
-        Access::RW,
-        &TEXT,
-        None,
-    )];
+    static S2010: [ObdSubEntry; 1] = decl::ram_object(DataType::UInt24, Access::RW, &I24);
+    static S2011: [ObdSubEntry; 1] = decl::ram_object(DataType::UInt32, Access::RW, &R32);
+    static S2012: [ObdSubEntry; 1] = decl::ram_object(DataType::UInt16, Access::RW, &U16);
+    static S2013: [ObdSubEntry; 1] = decl::ram_object(DataType::Domain, Access::RW, &TEXT);
     static USER: [ObdEntry; 4] = [
         ObdEntry::new(0x2010, &S2010, None),
         ObdEntry::new(0x2011, &S2011, None),
@@ -665,28 +641,11 @@ mod tests {
     static SAFE_1: [AtomicU8; 1] = decl::zeroed();
     static SAFE_2: [AtomicU8; 1] = decl::zeroed();
     static SAFE_3: [AtomicU8; 1] = decl::zeroed();
-    static S6201: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt8,
-        Access::PRW,
-        &SAFE,
-        None,
-    )];
-    static S6202: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt8,
-        Access::PRW,
-        &SAFE,
-        None,
-    )];
+    static S6201: [ObdSubEntry; 1] = decl::ram_object(DataType::UInt8, Access::PRW, &SAFE);
+    static S6202: [ObdSubEntry; 1] = decl::ram_object(DataType::UInt8, Access::PRW, &SAFE);
     crate::obd_create_srdo_cfg_valid!(mod cfg_valid);
     crate::obd_create_srdo_crc!(mod crcs, [0]);
-    static GEN: [ObdEntry; 4] = [
-        crate::srdo_obd_entry!(c1),
-        crate::srdo_obd_entry!(m1),
-        crate::srdo_obd_entry!(cfg_valid),
-        crate::srdo_obd_entry!(crcs),
-    ];
+    static GEN: [ObdEntry; 4] = crate::srdo_obd_entries![c1, m1, cfg_valid, crcs];
     static DEV: [ObdEntry; 3] = [
         ObdEntry::new(0x6200, &S6200, None),
         ObdEntry::new(0x6201, &S6201, None),

@@ -37,43 +37,26 @@ use core::sync::atomic::AtomicU8;
 use super::PDO_MAX_MAPPENTRIES;
 use crate::od::{Access, DataType, ObdSubEntry, decl};
 
-crate::od::decl::default_is_new!(CommuVars, MappVars);
+crate::od::decl::default_is_new!(MappVars);
 
 /// Highest subindex of a communication parameter object.
 static COMMU_SUB0: [u8; 1] = [5];
 
-/// The variables of a communication parameter object.
-#[derive(Debug)]
-pub struct CommuVars {
-    /// Sub 1, COB-ID.
-    pub cob_id: [AtomicU8; 4],
-    /// Sub 2, transmission type.
-    pub tx_type: [AtomicU8; 1],
-    /// Sub 3, inhibit time (100 µs).
-    pub inhibit: [AtomicU8; 2],
-    /// Sub 5, event timer (ms).
-    pub event: [AtomicU8; 2],
-}
-
-impl CommuVars {
-    /// Zeroed variables (the defaults apply at reset communication).
-    pub const fn new() -> Self {
-        CommuVars {
-            cob_id: decl::zeroed(),
-            tx_type: decl::zeroed(),
-            inhibit: decl::zeroed(),
-            event: decl::zeroed(),
-        }
+crate::od::decl::param_blocks! {
+    /// The variables of a communication parameter object.
+    pub struct CommuVars;
+    /// The defaults of a communication parameter object (CPU byte order).
+    pub struct CommuDefaults;
+    {
+        /// Sub 1, COB-ID.
+        cob_id: 4,
+        /// Sub 2, transmission type.
+        tx_type: 1,
+        /// Sub 3, inhibit time (100 µs).
+        inhibit: 2,
+        /// Sub 5, event timer (ms).
+        event: 2,
     }
-}
-
-/// The defaults of a communication parameter object (CPU byte order).
-#[derive(Debug)]
-pub struct CommuDefaults {
-    cob_id: [u8; 4],
-    tx_type: [u8; 1],
-    inhibit: [u8; 2],
-    event: [u8; 2],
 }
 
 impl CommuDefaults {

@@ -44,23 +44,8 @@ static S2000: [ObdSubEntry; 10] = [
     ObdSubEntry::ram_string(9, Access::PRW, &TEXT, c""),
 ];
 
-static SYNC_COB: [AtomicU8; 4] = od_decl::zeroed();
-static SYNC_COB_DEF: [u8; 4] = 0x80u32.to_ne_bytes();
-static SYNC_WINDOW: [AtomicU8; 4] = od_decl::zeroed();
-static S1005: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-    0,
-    DataType::UInt32,
-    Access::SRW,
-    &SYNC_COB,
-    Some(&SYNC_COB_DEF),
-)];
-static S1007: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-    0,
-    DataType::UInt32,
-    Access::SRW,
-    &SYNC_WINDOW,
-    Some(&[0; 4]),
-)];
+crate::od_ram!(static S1005, SYNC_COB: u32 = 0x80 => UInt32, SRW);
+crate::od_ram!(static S1007, SYNC_WINDOW: u32 = 0 => UInt32, SRW);
 
 static GENERIC: [ObdEntry; 6] = [
     ObdEntry::new(0x1005, &S1005, None),
@@ -80,6 +65,13 @@ fn fresh() -> (std::sync::MutexGuard<'static, ()>, ObjectDictionary) {
     let g = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
     let od = ObjectDictionary::new(&GENERIC, &MANUFACTURER, &[]).unwrap();
     od.restore_defaults(0x1000, 0xFFFF);
+    (g, od)
+}
+
+/// [`fresh`] with TPDO 1 valid at 0x181.
+fn tpdo_1_valid() -> (std::sync::MutexGuard<'static, ()>, ObjectDictionary) {
+    let (g, od) = fresh();
+    od.poke_uint(0x1800, 1, 0x181).unwrap();
     (g, od)
 }
 
@@ -222,8 +214,7 @@ fn write(od: &ObjectDictionary, index: u16, sub: u8, v: u64) -> Result<(), OdErr
 
 #[test]
 fn cia301_mapping_procedure() {
-    let (_g, od) = fresh();
-    od.poke_uint(0x1800, 1, 0x181).unwrap();
+    let (_g, od) = tpdo_1_valid();
     // Step 1 missing: the PDO is valid, the mapping stays as it is.
     assert_eq!(write(&od, 0x1A00, 0, 0), Err(refuse::STATE));
     assert_eq!(refuse::STATE.abort, 0x0800_0022);
@@ -256,9 +247,7 @@ fn cia301_mapping_procedure() {
 
 #[test]
 fn communication_parameter_rules() {
-    let (_g, od) = fresh();
-    // TPDO valid with 0x181.
-    od.poke_uint(0x1800, 1, 0x181).unwrap();
+    let (_g, od) = tpdo_1_valid();
     // CiA 301 §7.5.2.37: the identifier does not change while valid.
     assert_eq!(write(&od, 0x1800, 1, 0x182), Err(refuse::INVALID));
     assert_eq!(refuse::INVALID.abort, 0x0609_0030);

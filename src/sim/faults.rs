@@ -788,14 +788,27 @@ impl Sim {
         }
         let reported = (tn > self.last_valid + SCT).then_some(CopKernel::SrdoSctTimeout);
         self.record_pair(tn, gap, reported);
-        let (data, n, i) = self.send_pair(tn);
+        let pair = self.send_pair(tn);
+        let n_seq = self.deliver_accepted(tn, gap, pair);
+        self.free_from = tn + gap;
+        self.report.cycles += 1;
+        n_seq
+    }
+
+    /// Delivers the frames of `pair` (as `send_pair` returns it) at `tn`
+    /// and `gap` later, the consumer accepting the pair; returns the
+    /// sequence number of frame 1.
+    fn deliver_accepted(
+        &mut self,
+        tn: u64,
+        gap: u64,
+        (data, n, i): ([u8; DATA_LEN], CanFrame, CanFrame),
+    ) -> u64 {
         let n_seq = self.act(tn, Act::Deliver(n));
         let i_seq = self.act(tn + gap, Act::Deliver(i));
         let c = self.cycle_at(tn + gap);
         self.expect(c, PH_FRAME, i_seq, Obs::Accept(data));
         self.last_valid = tn;
-        self.free_from = tn + gap;
-        self.report.cycles += 1;
         n_seq
     }
 
@@ -1098,11 +1111,7 @@ impl Sim {
         self.report.cycles += 1;
         if self.rng.one_in(2) {
             // Between two pairs of the producer.
-            self.act(tn, Act::Deliver(n));
-            let i_seq = self.act(tn + gap, Act::Deliver(i));
-            let c = self.cycle_at(tn + gap);
-            self.expect(c, PH_FRAME, i_seq, Obs::Accept(data));
-            self.last_valid = tn;
+            self.deliver_accepted(tn, gap, (data, n, i));
             let tr = tn + gap + self.rng.range(0, COMPACT / 2);
             let tir = tr + self.rng.range(0, SRVT);
             self.act(tr, Act::RogueSend { data: rogue });
@@ -1139,11 +1148,7 @@ impl Sim {
         self.report.cycles += 1;
         match self.rng.range(0, 2) {
             0 => {
-                self.act(tn, Act::Deliver(n));
-                let i_seq = self.act(tn + gap, Act::Deliver(i));
-                let c = self.cycle_at(tn + gap);
-                self.expect(c, PH_FRAME, i_seq, Obs::Accept(data));
-                self.last_valid = tn;
+                self.deliver_accepted(tn, gap, (data, n, i));
                 let tb = tn + gap + self.rng.range(0, COMPACT / 2);
                 let n_burst = RX_CAPACITY + 1 + self.rng.range(0, 7) as usize;
                 let b_seq = self.act(tb, Act::Burst(Some(n_burst)));
@@ -1179,33 +1184,46 @@ impl Sim {
         }
     }
 
+    /// A moment 1..29 ticks after `after` (the steps of a reconfiguration).
+    fn soon_after(&mut self, after: u64) -> u64 {
+        after + self.rng.range(1, 30)
+    }
+
+    /// The NMT command `cs` soon after `after`; the cycle that handles it.
+    fn nmt_soon_after(&mut self, after: u64, cs: NmtCs) -> u64 {
+        let t = self.soon_after(after);
+        self.act(t, Act::Nmt(cs));
+        self.cycle_at(t)
+    }
+
+    /// The write of 0x13FE soon after `after` and its `reply`; the cycle
+    /// that handles it.
+    fn config_valid_soon_after(&mut self, after: u64, reply: SdoReply) -> u64 {
+        let t = self.soon_after(after);
+        self.sdo_download(t, 0x13FE, 0, 0xA5, 1, reply);
+        self.cycle_at(t)
+    }
+
+    /// Checks, at the end of cycle `p`, whether the consumer's SRDO runs
+    /// and what 0x13FE holds.
+    fn check_late(&mut self, p: u64, running: bool, valid: u8) {
+        self.act_at(p, true, Act::Check { running, valid });
+    }
+
     fn plan_config_crc(&mut self) -> &'static str {
         let crc_error = Obs::Config(CopKernel::SrdoCfgCrcError, SRDO);
-        let t1 = self.free_from + self.rng.range(1, 30);
-        self.act(t1, Act::Nmt(NmtCs::EnterPreOperational));
-        let p1 = self.cycle_at(t1);
-        let t2 = p1 + self.rng.range(1, 30);
+        let p1 = self.nmt_soon_after(self.free_from, NmtCs::EnterPreOperational);
+        let t2 = self.soon_after(p1);
         let changed = u32::from(SCT_MS) + self.rng.range(1, 50) as u32;
         self.sdo_download(t2, SRDO, 2, changed, 2, SdoReply::Done(SRDO, 2));
         let p2 = self.cycle_at(t2);
-        let t3 = p2 + self.rng.range(1, 30);
         let refused = SdoReply::Abort(0x13FE, 0, 0x0800_0020);
-        self.sdo_download(t3, 0x13FE, 0, 0xA5, 1, refused);
-        let p3 = self.cycle_at(t3);
-        let t4 = p3 + self.rng.range(1, 30);
-        self.act(t4, Act::Nmt(NmtCs::Start));
-        let p4 = self.cycle_at(t4);
-        self.act_at(
-            p4,
-            true,
-            Act::Check {
-                running: false,
-                valid: 0,
-            },
-        );
+        let p3 = self.config_valid_soon_after(p2, refused);
+        let p4 = self.nmt_soon_after(p3, NmtCs::Start);
+        self.check_late(p4, false, 0);
         // The producer goes on; the consumer's SRDO does not run and must
         // ignore the pair.
-        let tx = p4 + self.rng.range(1, 30);
+        let tx = self.soon_after(p4);
         let (_, n, i) = self.send_pair(tx);
         self.act(tx, Act::Deliver(n));
         let txi = tx + self.legal_gap();
@@ -1220,10 +1238,8 @@ impl Sim {
             let last = self.polls.back().map_or(p2, |p| p.t);
             self.ensure_polls(last + POLL_MAX);
         };
-        let t5 = first_diag.max(txi) + self.rng.range(1, 30);
-        self.act(t5, Act::Nmt(NmtCs::EnterPreOperational));
-        let p5 = self.cycle_at(t5);
-        let t6 = p5 + self.rng.range(1, 30);
+        let p5 = self.nmt_soon_after(first_diag.max(txi), NmtCs::EnterPreOperational);
+        let t6 = self.soon_after(p5);
         self.sdo_download(t6, SRDO, 2, u32::from(SCT_MS), 2, SdoReply::Done(SRDO, 2));
         let p6 = self.cycle_at(t6);
         let diag: Vec<u64> = self
@@ -1235,20 +1251,9 @@ impl Sim {
         for t in diag {
             self.expect(t, PH_DIAG, 0, crc_error);
         }
-        let t7 = p6 + self.rng.range(1, 30);
-        self.sdo_download(t7, 0x13FE, 0, 0xA5, 1, SdoReply::Done(0x13FE, 0));
-        let p7 = self.cycle_at(t7);
-        let t8 = p7 + self.rng.range(1, 30);
-        self.act(t8, Act::Nmt(NmtCs::Start));
-        let p8 = self.cycle_at(t8);
-        self.act_at(
-            p8,
-            true,
-            Act::Check {
-                running: true,
-                valid: 0xA5,
-            },
-        );
+        let p7 = self.config_valid_soon_after(p6, SdoReply::Done(0x13FE, 0));
+        let p8 = self.nmt_soon_after(p7, NmtCs::Start);
+        self.check_late(p8, true, 0xA5);
         // The SCT runs from entering OPERATIONAL.
         self.last_valid = p8;
         self.legal_pair(p8 + 1);

@@ -12,9 +12,7 @@ use crate::store::image::NvFault;
 struct Inner {
     mem: Vec<u8>,
     align: u32,
-    cut_after_bytes: Option<usize>,
-    cut_after_calls: Option<usize>,
-    dead: bool,
+    cut: PowerCut,
     writes: usize,
 }
 
@@ -28,9 +26,7 @@ impl SimNvram {
         SimNvram(Mutex::new(Inner {
             mem: vec![0xFF; size],
             align,
-            cut_after_bytes: None,
-            cut_after_calls: None,
-            dead: false,
+            cut: PowerCut::default(),
             writes: 0,
         }))
     }
@@ -51,20 +47,17 @@ impl SimNvram {
 
     /// Power fails after `n` more bytes erased or written.
     pub fn cut_after_bytes(&self, n: usize) {
-        self.inner().cut_after_bytes = Some(n);
+        self.inner().cut.bytes = Some(n);
     }
 
     /// Power fails after `n` more driver calls.
     pub fn cut_after_calls(&self, n: usize) {
-        self.inner().cut_after_calls = Some(n);
+        self.inner().cut.calls = Some(n);
     }
 
     /// Power is back: no cut pending, the memory answers again.
     pub fn power_on(&self) {
-        let mut i = self.inner();
-        i.cut_after_bytes = None;
-        i.cut_after_calls = None;
-        i.dead = false;
+        self.inner().cut = PowerCut::default();
     }
 
     /// Inverts bit `bit` of the byte at `offset`.
@@ -85,29 +78,52 @@ impl SimNvram {
     }
 }
 
-impl Inner {
-    fn call(&mut self) -> Result<(), NvFault> {
+/// When the power fails: after `bytes` more bytes erased or written, or
+/// after `calls` more driver calls (`None`: no cut pending). From the cut
+/// on, every call fails.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct PowerCut {
+    pub(crate) bytes: Option<usize>,
+    pub(crate) calls: Option<usize>,
+    dead: bool,
+}
+
+impl PowerCut {
+    /// One driver call.
+    pub(crate) fn call(&mut self) -> Result<(), NvFault> {
         if self.dead {
             return Err(NvFault);
         }
-        if let Some(c) = self.cut_after_calls.as_mut() {
-            if *c == 0 {
-                self.dead = true;
-                return Err(NvFault);
+        Self::spend(&mut self.calls, &mut self.dead)
+    }
+
+    /// One byte erased or written.
+    pub(crate) fn byte(&mut self) -> Result<(), NvFault> {
+        Self::spend(&mut self.bytes, &mut self.dead)
+    }
+
+    fn spend(left: &mut Option<usize>, dead: &mut bool) -> Result<(), NvFault> {
+        match left {
+            Some(0) => {
+                *dead = true;
+                Err(NvFault)
             }
-            *c -= 1;
+            Some(n) => {
+                *n -= 1;
+                Ok(())
+            }
+            None => Ok(()),
         }
-        Ok(())
+    }
+}
+
+impl Inner {
+    fn call(&mut self) -> Result<(), NvFault> {
+        self.cut.call()
     }
 
     fn put(&mut self, at: usize, v: u8) -> Result<(), NvFault> {
-        if let Some(b) = self.cut_after_bytes.as_mut() {
-            if *b == 0 {
-                self.dead = true;
-                return Err(NvFault);
-            }
-            *b -= 1;
-        }
+        self.cut.byte()?;
         *self.mem.get_mut(at).ok_or(NvFault)? = v;
         self.writes += 1;
         Ok(())

@@ -81,15 +81,7 @@ macro_rules! device_od {
             crate::obd_create_srdo_cfg_valid!(pub mod cfg_valid);
             crate::obd_create_srdo_crc!(pub mod crcs, [0, 0]);
 
-            static GENERIC: [ObdEntry; 7] = [
-                crate::srdo_obd_entry!(gfc),
-                crate::srdo_obd_entry!(c1),
-                crate::srdo_obd_entry!(c2),
-                crate::srdo_obd_entry!(m1),
-                crate::srdo_obd_entry!(m2),
-                crate::srdo_obd_entry!(cfg_valid),
-                crate::srdo_obd_entry!(crcs),
-            ];
+            static GENERIC: [ObdEntry; 7] = crate::srdo_obd_entries![gfc, c1, c2, m1, m2, cfg_valid, crcs];
             static DEVICE: [ObdEntry; [$($idx),*].len()] = [
                 $(ObdEntry::new($idx, {
                     static S: [ObdSubEntry; 2] = var(&$field, $at);

@@ -21,7 +21,8 @@
 //!
 //! Each macro declares a module holding the variables, the subindex table
 //! `SUBS` and the index `INDEX`; [`srdo_obd_entry!`](crate::srdo_obd_entry)
-//! turns such a module into the `ObdEntry` of a part table:
+//! turns such a module into the `ObdEntry` of a part table,
+//! [`srdo_obd_entries!`](crate::srdo_obd_entries) several into an array:
 //!
 //! ```
 //! use cop::od::ObdEntry;
@@ -30,21 +31,16 @@
 //! cop::obd_create_srdo_mapp!(pub mod srdo1_mapp, 0x1381, [0x6200_0110, 0x6201_0110]);
 //! cop::obd_create_srdo_cfg_valid!(pub mod cfg_valid);
 //! cop::obd_create_srdo_crc!(pub mod checksums, [0x0000]);
-//! static PART: [ObdEntry; 5] = [
-//!     cop::srdo_obd_entry!(gfc),
-//!     cop::srdo_obd_entry!(srdo1),
-//!     cop::srdo_obd_entry!(srdo1_mapp),
-//!     cop::srdo_obd_entry!(cfg_valid),
-//!     cop::srdo_obd_entry!(checksums),
-//! ];
+//! static PART: [ObdEntry; 5] =
+//!     cop::srdo_obd_entries![gfc, srdo1, srdo1_mapp, cfg_valid, checksums];
+//! static GFC: ObdEntry = cop::srdo_obd_entry!(gfc);
+//! assert_eq!(PART[0].index(), GFC.index());
 //! ```
 
 use core::sync::atomic::AtomicU8;
 
 use crate::config::SRDO_MAX_MAPPENTRIES;
 use crate::od::{Access, DataType, ObdSubEntry};
-
-crate::od::decl::default_is_new!(CommuVars, MappVars);
 
 /// Subindices of a communication parameter (0..=6).
 pub const COMMU_SUBS: usize = 7;
@@ -54,42 +50,23 @@ pub const MAPP_SUBS: usize = 1 + SRDO_MAX_MAPPENTRIES;
 /// Fills arrays of subindex descriptions before each element is set.
 const PLACEHOLDER: ObdSubEntry = ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[0]);
 
-/// The variables of one communication parameter (CPU byte order).
-#[derive(Debug)]
-pub struct CommuVars {
-    /// Sub 1, information direction.
-    pub direction: [AtomicU8; 1],
-    /// Sub 2, refresh time / SCT in ms.
-    pub sct: [AtomicU8; 2],
-    /// Sub 3, SRVT in ms.
-    pub srvt: [AtomicU8; 1],
-    /// Sub 5, COB-ID 1.
-    pub cob1: [AtomicU8; 4],
-    /// Sub 6, COB-ID 2.
-    pub cob2: [AtomicU8; 4],
-}
-
-impl CommuVars {
-    /// All zero (the stack loads the defaults at reset communication).
-    pub const fn new() -> Self {
-        CommuVars {
-            direction: crate::od::decl::zeroed(),
-            sct: crate::od::decl::zeroed(),
-            srvt: crate::od::decl::zeroed(),
-            cob1: crate::od::decl::zeroed(),
-            cob2: crate::od::decl::zeroed(),
-        }
+crate::od::decl::param_blocks! {
+    /// The variables of one communication parameter (CPU byte order).
+    pub struct CommuVars;
+    /// Default values of one communication parameter (CPU byte order).
+    pub struct CommuDefaults;
+    {
+        /// Sub 1, information direction.
+        direction: 1,
+        /// Sub 2, refresh time / SCT in ms.
+        sct: 2,
+        /// Sub 3, SRVT in ms.
+        srvt: 1,
+        /// Sub 5, COB-ID 1.
+        cob1: 4,
+        /// Sub 6, COB-ID 2.
+        cob2: 4,
     }
-}
-
-/// Default values of one communication parameter (CPU byte order).
-#[derive(Debug)]
-pub struct CommuDefaults {
-    direction: [u8; 1],
-    sct: [u8; 2],
-    srvt: [u8; 1],
-    cob1: [u8; 4],
-    cob2: [u8; 4],
 }
 
 impl CommuDefaults {
@@ -122,30 +99,17 @@ pub const fn commu_subs(
     ]
 }
 
-/// The variables of one mapping parameter (CPU byte order).
-#[derive(Debug)]
-pub struct MappVars {
-    /// Sub 0, number of mapped entries.
-    pub count: [AtomicU8; 1],
-    /// Subs 1.., four bytes each.
-    pub entries: [AtomicU8; 4 * SRDO_MAX_MAPPENTRIES],
-}
-
-impl MappVars {
-    /// All zero.
-    pub const fn new() -> Self {
-        MappVars {
-            count: crate::od::decl::zeroed(),
-            entries: crate::od::decl::zeroed(),
-        }
+crate::od::decl::param_blocks! {
+    /// The variables of one mapping parameter (CPU byte order).
+    pub struct MappVars;
+    /// Default values of one mapping parameter (CPU byte order).
+    pub struct MappDefaults;
+    {
+        /// Sub 0, number of mapped entries.
+        count: 1,
+        /// Subs 1.., four bytes each.
+        entries: 4 * SRDO_MAX_MAPPENTRIES,
     }
-}
-
-/// Default values of one mapping parameter (CPU byte order).
-#[derive(Debug)]
-pub struct MappDefaults {
-    count: [u8; 1],
-    entries: [u8; 4 * SRDO_MAX_MAPPENTRIES],
 }
 
 impl MappDefaults {
@@ -276,6 +240,27 @@ macro_rules! __obd_srdo_byte_object {
     };
 }
 
+/// A parameter object (0x1301.., 0x1381..) in a module `$m`: the index,
+/// the variables `objects::$vars`, the defaults `objects::$defaults` made
+/// of the arguments and the subindex table (`$count` entries) that
+/// `objects::$subs` lays over both.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __obd_srdo_param_object {
+    ($vis:vis mod $m:ident, $index:expr, $vars:ident, $defaults:ident($($arg:expr),*),
+        $count:ident, $subs:ident) => {
+        #[allow(missing_docs)]
+        $vis mod $m {
+            pub const INDEX: u16 = $index;
+            pub static VARS: $crate::srdo::objects::$vars = $crate::srdo::objects::$vars::new();
+            pub static DEFAULTS: $crate::srdo::objects::$defaults =
+                $crate::srdo::objects::$defaults::new($($arg),*);
+            pub static SUBS: [$crate::od::ObdSubEntry; $crate::srdo::objects::$count] =
+                $crate::srdo::objects::$subs(&VARS, &DEFAULTS);
+        }
+    };
+}
+
 /// `OBD_CREATE_SRDO_GFC_PARAM()`: object 0x1300 in a module `$m`.
 #[macro_export]
 macro_rules! obd_create_srdo_gfc_param {
@@ -289,16 +274,10 @@ macro_rules! obd_create_srdo_gfc_param {
 #[macro_export]
 macro_rules! obd_create_srdo_commu {
     ($vis:vis mod $m:ident, $index:expr, $dir:expr, $sct:expr, $srvt:expr, $cob1:expr, $cob2:expr) => {
-        #[allow(missing_docs)]
-        $vis mod $m {
-            pub const INDEX: u16 = $index;
-            pub static VARS: $crate::srdo::objects::CommuVars =
-                $crate::srdo::objects::CommuVars::new();
-            pub static DEFAULTS: $crate::srdo::objects::CommuDefaults =
-                $crate::srdo::objects::CommuDefaults::new($dir, $sct, $srvt, $cob1, $cob2);
-            pub static SUBS: [$crate::od::ObdSubEntry; $crate::srdo::objects::COMMU_SUBS] =
-                $crate::srdo::objects::commu_subs(&VARS, &DEFAULTS);
-        }
+        $crate::__obd_srdo_param_object!(
+            $vis mod $m, $index, CommuVars, CommuDefaults($dir, $sct, $srvt, $cob1, $cob2),
+            COMMU_SUBS, commu_subs
+        );
     };
 }
 
@@ -308,16 +287,9 @@ macro_rules! obd_create_srdo_commu {
 #[macro_export]
 macro_rules! obd_create_srdo_mapp {
     ($vis:vis mod $m:ident, $index:expr, [$($entry:expr),* $(,)?]) => {
-        #[allow(missing_docs)]
-        $vis mod $m {
-            pub const INDEX: u16 = $index;
-            pub static VARS: $crate::srdo::objects::MappVars =
-                $crate::srdo::objects::MappVars::new();
-            pub static DEFAULTS: $crate::srdo::objects::MappDefaults =
-                $crate::srdo::objects::MappDefaults::new(&[$($entry),*]);
-            pub static SUBS: [$crate::od::ObdSubEntry; $crate::srdo::objects::MAPP_SUBS] =
-                $crate::srdo::objects::mapp_subs(&VARS, &DEFAULTS);
-        }
+        $crate::__obd_srdo_param_object!(
+            $vis mod $m, $index, MappVars, MappDefaults(&[$($entry),*]), MAPP_SUBS, mapp_subs
+        );
     };
 }
 
@@ -357,4 +329,13 @@ macro_rules! srdo_obd_entry {
         use $m as m;
         $crate::od::ObdEntry::new(m::INDEX, &m::SUBS, None)
     }};
+}
+
+/// The array of the `ObdEntry`s of several modules declared by the SRDO
+/// macros, in the order given (`srdo_obd_entry!` of each).
+#[macro_export]
+macro_rules! srdo_obd_entries {
+    ($($m:path),+ $(,)?) => {
+        [$($crate::srdo_obd_entry!($m)),+]
+    };
 }

@@ -30,50 +30,56 @@ const fn part(buf: &'static [AtomicU8], from: usize, len: usize) -> &'static [At
     buf.split_at(from).1.split_at(len).0
 }
 
-const fn u8_var(sub: u8, buf: &'static [AtomicU8], at: usize) -> ObdSubEntry {
+/// Subindex `sub`, a PRW variable of type `typ` over the bytes of `buf`
+/// from `at` on, as many as `default` has.
+const fn var_in(
+    sub: u8,
+    typ: DataType,
+    buf: &'static [AtomicU8],
+    at: usize,
+    default: &'static [u8],
+) -> ObdSubEntry {
     ObdSubEntry::ram(
         sub,
-        DataType::UInt8,
+        typ,
         Access::PRW,
-        part(buf, at, 1),
-        Some(&[0]),
+        part(buf, at, default.len()),
+        Some(default),
     )
+}
+
+const fn u8_var(sub: u8, buf: &'static [AtomicU8], at: usize) -> ObdSubEntry {
+    var_in(sub, DataType::UInt8, buf, at, &[0])
 }
 
 const fn u16_var(sub: u8, buf: &'static [AtomicU8], at: usize) -> ObdSubEntry {
-    ObdSubEntry::ram(
-        sub,
-        DataType::UInt16,
-        Access::PRW,
-        part(buf, at, 2),
-        Some(&[0, 0]),
-    )
+    var_in(sub, DataType::UInt16, buf, at, &[0, 0])
 }
 
-static S6200: [ObdSubEntry; 5] = [
-    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[4]),
-    u8_var(1, &NORMAL, 0),
-    u8_var(2, &NORMAL, 1),
-    u8_var(3, &NORMAL, 2),
-    u8_var(4, &NORMAL, 3),
-];
-static S6201: [ObdSubEntry; 3] = [
-    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[2]),
-    u16_var(1, &NORMAL, 4),
-    u16_var(2, &NORMAL, 6),
-];
-static S6300: [ObdSubEntry; 5] = [
-    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[4]),
-    u8_var(1, &INVERTED, 0),
-    u8_var(2, &INVERTED, 1),
-    u8_var(3, &INVERTED, 2),
-    u8_var(4, &INVERTED, 3),
-];
-static S6301: [ObdSubEntry; 3] = [
-    ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[2]),
-    u16_var(1, &INVERTED, 4),
-    u16_var(2, &INVERTED, 6),
-];
+/// Subindices 1..4: UNSIGNED8 over bytes 0..3 of `buf`.
+const fn four_u8(buf: &'static [AtomicU8]) -> [ObdSubEntry; 5] {
+    [
+        ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[4]),
+        u8_var(1, buf, 0),
+        u8_var(2, buf, 1),
+        u8_var(3, buf, 2),
+        u8_var(4, buf, 3),
+    ]
+}
+
+/// Subindices 1..2: UNSIGNED16 over bytes 4..7 of `buf`.
+const fn two_u16(buf: &'static [AtomicU8]) -> [ObdSubEntry; 3] {
+    [
+        ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[2]),
+        u16_var(1, buf, 4),
+        u16_var(2, buf, 6),
+    ]
+}
+
+static S6200: [ObdSubEntry; 5] = four_u8(&NORMAL);
+static S6201: [ObdSubEntry; 3] = two_u16(&NORMAL);
+static S6300: [ObdSubEntry; 5] = four_u8(&INVERTED);
+static S6301: [ObdSubEntry; 3] = two_u16(&INVERTED);
 static S6400: [ObdSubEntry; 5] = [
     ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[4]),
     ObdSubEntry::ram(1, DataType::UInt16, Access::PR, &RO_VAR, Some(&[0, 0])),
@@ -120,19 +126,8 @@ crate::obd_create_srdo_mapp!(
 crate::obd_create_srdo_cfg_valid!(mod cfg_valid);
 crate::obd_create_srdo_crc!(mod crcs, [0, 0, 0, 0]);
 
-static GENERIC: [ObdEntry; 11] = [
-    crate::srdo_obd_entry!(gfc),
-    crate::srdo_obd_entry!(c1),
-    crate::srdo_obd_entry!(c2),
-    crate::srdo_obd_entry!(c3),
-    crate::srdo_obd_entry!(c4),
-    crate::srdo_obd_entry!(m1),
-    crate::srdo_obd_entry!(m2),
-    crate::srdo_obd_entry!(m3),
-    crate::srdo_obd_entry!(m4),
-    crate::srdo_obd_entry!(cfg_valid),
-    crate::srdo_obd_entry!(crcs),
-];
+static GENERIC: [ObdEntry; 11] =
+    crate::srdo_obd_entries![gfc, c1, c2, c3, c4, m1, m2, m3, m4, cfg_valid, crcs];
 static DEVICE: [ObdEntry; 7] = [
     ObdEntry::new(0x6200, &S6200, None),
     ObdEntry::new(0x6201, &S6201, None),
@@ -150,15 +145,8 @@ crate::obd_create_srdo_mapp!(mod gm1, 0x1381, []);
 crate::obd_create_srdo_mapp!(mod gm3, 0x1383, []);
 crate::obd_create_srdo_cfg_valid!(mod g_cfg_valid);
 crate::obd_create_srdo_crc!(mod g_crcs, [0, 0, 0]);
-static GAPPED: [ObdEntry; 6] = [
-    crate::srdo_obd_entry!(g1),
-    crate::srdo_obd_entry!(g3),
-    crate::srdo_obd_entry!(gm1),
-    crate::srdo_obd_entry!(gm3),
-    crate::srdo_obd_entry!(g_cfg_valid),
-    crate::srdo_obd_entry!(g_crcs),
-];
-static NO_CFG_VALID: [ObdEntry; 2] = [crate::srdo_obd_entry!(g1), crate::srdo_obd_entry!(gm1)];
+static GAPPED: [ObdEntry; 6] = crate::srdo_obd_entries![g1, g3, gm1, gm3, g_cfg_valid, g_crcs];
+static NO_CFG_VALID: [ObdEntry; 2] = crate::srdo_obd_entries![g1, gm1];
 
 /// The dictionaries' variables are statics shared by all tests here; each
 /// test holds this lock.
@@ -436,6 +424,13 @@ mod dynamic {
         seal(od, srdo);
     }
 
+    /// [`setup`] with [`receive_config`] applied.
+    fn setup_receiving() -> (std::sync::MutexGuard<'static, ()>, ObjectDictionary, Srdo) {
+        let (g, od, srdo) = setup();
+        receive_config(&od, &srdo);
+        (g, od, srdo)
+    }
+
     fn operational(od: &ObjectDictionary, srdo: &mut Srdo, now: u32) {
         srdo.on_state(od, NmtState::Operational, 5, Ticks(now));
         assert!(srdo.is_running());
@@ -444,94 +439,88 @@ mod dynamic {
     // req: M-2.8.2-CHECK, SB-2-ORDER, SB-2-MAPPING, SB-2-LENGTH, M-1.1-COBID
     #[test]
     fn configuration_check_codes_in_order() {
-        let (_g, od, srdo) = setup();
-        receive_config(&od, &srdo);
+        let (_g, od, srdo) = setup_receiving();
         assert_eq!(srdo.check_config(&od), Ok(()));
 
-        // CRC first: a changed parameter without a new CRC.
-        set(&od, 0x1301, 3, 21);
-        assert_eq!(
-            srdo.check_config(&od),
-            Err((CopKernel::SrdoCfgCrcError, 0x1301))
-        );
-        set(&od, 0x1301, 3, 20);
-        assert_eq!(srdo.check_config(&od), Ok(()));
+        // CRC first: a changed parameter without a new CRC; disabled SRDOs
+        // are CRC-checked too, and the first bad SRDO is named.
+        for (index, sub, changed, sealed) in [(0x1301, 3, 21, 20), (0x1303, 2, 26, 25)] {
+            set(&od, index, sub, changed);
+            let crc_error = Err((CopKernel::SrdoCfgCrcError, index));
+            assert_eq!(srdo.check_config(&od), crc_error);
+            set(&od, index, sub, sealed);
+            assert_eq!(srdo.check_config(&od), Ok(()));
+        }
 
-        // Disabled SRDOs are CRC-checked too, and the first bad SRDO is named.
-        set(&od, 0x1303, 2, 26);
-        assert_eq!(
-            srdo.check_config(&od),
-            Err((CopKernel::SrdoCfgCrcError, 0x1303))
-        );
-        set(&od, 0x1303, 2, 25);
-
-        let cases: &[(Writes, CopKernel)] = &[
-            (&[(0x1301, 1, 3)], CopKernel::SrdoInvalidCfg),
-            (&[(0x1301, 2, 0)], CopKernel::SrdoCfgTimingError),
-            (&[(0x1301, 3, 0)], CopKernel::SrdoCfgTimingError),
-            (&[(0x1301, 2, 19)], CopKernel::SrdoCfgTimingError),
+        // Dummy entries (index 0x0006) map only with the srdo-dummy-mapping switch.
+        let dummy = if crate::config::SRDO_USE_DUMMY_MAPPING {
+            CopKernel::Successful
+        } else {
+            CopKernel::SrdoErrorMapp
+        };
+        // Each code with the configurations (writes into a good one) that
+        // give it.
+        let cases: &[(CopKernel, &[Writes])] = &[
+            (CopKernel::SrdoInvalidCfg, &[&[(0x1301, 1, 3)]]),
+            (
+                CopKernel::SrdoCfgTimingError,
+                &[&[(0x1301, 2, 0)], &[(0x1301, 3, 0)], &[(0x1301, 2, 19)]],
+            ),
             // SRVT equal to SCT is allowed (only SRVT > SCT is refused).
-            (&[(0x1301, 3, 25)], CopKernel::Successful),
+            (CopKernel::Successful, &[&[(0x1301, 3, 25)]]),
             (
-                &[(0x1301, 5, 0x102), (0x1301, 6, 0x103)],
                 CopKernel::SrdoCfgIdError,
-            ),
-            (
-                &[(0x1301, 5, 0x181), (0x1301, 6, 0x182)],
-                CopKernel::SrdoCfgIdError,
-            ),
-            (&[(0x1301, 6, 0x104)], CopKernel::SrdoCfgIdError),
-            (&[(0x1381, 0, 1)], CopKernel::SrdoErrorMapp),
-            (&[(0x1381, 0, 0)], CopKernel::SrdoErrorMapp),
-            (&[(0x1381, 2, 0x6300_0108)], CopKernel::SrdoErrorMapp),
-            (&[(0x1381, 1, 0x6202_0110)], CopKernel::SrdoErrorMapp),
-            (&[(0x1381, 1, 0x6201_0310)], CopKernel::SrdoErrorMapp),
-            (
-                &[(0x1381, 1, 0x6400_0110), (0x1381, 2, 0x6301_0110)],
-                CopKernel::SrdoErrorMapp,
-            ),
-            (&[(0x1381, 1, 0x6400_0210)], CopKernel::SrdoErrorMapp),
-            // Both entries of the pair of length 0 (equal lengths).
-            (
-                &[(0x1381, 1, 0x6300_0100), (0x1381, 2, 0x6301_0100)],
-                CopKernel::SrdoErrorMapp,
-            ),
-            (
-                &[(0x1381, 1, 0x6400_0320), (0x1381, 2, 0x6301_0120)],
-                CopKernel::SrdoErrorMapp,
-            ),
-            (
-                &[(0x1381, 1, 0x0006_0010), (0x1381, 2, 0x0006_0010)],
-                if crate::config::SRDO_USE_DUMMY_MAPPING {
-                    CopKernel::Successful
-                } else {
-                    CopKernel::SrdoErrorMapp
-                },
-            ),
-            (
                 &[
+                    &[(0x1301, 5, 0x102), (0x1301, 6, 0x103)],
+                    &[(0x1301, 5, 0x181), (0x1301, 6, 0x182)],
+                    &[(0x1301, 6, 0x104)],
+                ],
+            ),
+            (
+                CopKernel::SrdoErrorMapp,
+                &[
+                    &[(0x1381, 0, 1)],
+                    &[(0x1381, 0, 0)],
+                    &[(0x1381, 2, 0x6300_0108)],
+                    &[(0x1381, 1, 0x6202_0110)],
+                    &[(0x1381, 1, 0x6201_0310)],
+                    &[(0x1381, 1, 0x6400_0110), (0x1381, 2, 0x6301_0110)],
+                    &[(0x1381, 1, 0x6400_0210)],
+                    // Both entries of the pair of length 0 (equal lengths).
+                    &[(0x1381, 1, 0x6300_0100), (0x1381, 2, 0x6301_0100)],
+                    &[(0x1381, 1, 0x6400_0320), (0x1381, 2, 0x6301_0120)],
+                ],
+            ),
+            (
+                dummy,
+                &[&[(0x1381, 1, 0x0006_0010), (0x1381, 2, 0x0006_0010)]],
+            ),
+            (
+                CopKernel::SrdoLengthExceeded,
+                &[&[
                     (0x1381, 0, 6),
                     (0x1381, 3, 0x6400_0320),
                     (0x1381, 4, 0x6400_0420),
                     (0x1381, 5, 0x6500_0118),
                     (0x1381, 6, 0x6500_0218),
-                ],
-                CopKernel::SrdoLengthExceeded,
+                ]],
             ),
         ];
-        for (writes, code) in cases {
-            od.restore_defaults(0x1000, 0x1FFF);
-            receive_config(&od, &srdo);
-            for (i, s, v) in writes.iter().copied() {
-                set(&od, i, s, v);
+        for (code, configurations) in cases {
+            for writes in configurations.iter() {
+                od.restore_defaults(0x1000, 0x1FFF);
+                receive_config(&od, &srdo);
+                for (i, s, v) in writes.iter().copied() {
+                    set(&od, i, s, v);
+                }
+                seal(&od, &srdo);
+                let expected = if *code == CopKernel::Successful {
+                    Ok(())
+                } else {
+                    Err((*code, 0x1301))
+                };
+                assert_eq!(srdo.check_config(&od), expected, "after {writes:x?}");
             }
-            seal(&od, &srdo);
-            let expected = if *code == CopKernel::Successful {
-                Ok(())
-            } else {
-                Err((*code, 0x1301))
-            };
-            assert_eq!(srdo.check_config(&od), expected, "after {writes:x?}");
         }
     }
 
@@ -541,8 +530,7 @@ mod dynamic {
     // req: SB-2-MAPPING, SB-2-LENGTH, M-2.4-GRANULARITY, SB-3-CRC-VECTORS
     #[test]
     fn full_mapping_at_the_limits_passes() {
-        let (_g, od, srdo) = setup();
-        receive_config(&od, &srdo);
+        let (_g, od, srdo) = setup_receiving();
         let pairs = u8::try_from(SRDO_MAX_MAPPENTRIES / 2).unwrap();
         let bits = 64 / u32::from(pairs);
         assert_eq!(bits, u32::from(SRDO_GRANULARITY), "entries of one granule");
@@ -599,8 +587,7 @@ mod dynamic {
     // req: SB-2-MAPPING
     #[test]
     fn attached_variables_of_the_wrong_size_are_refused() {
-        let (_g, od, srdo) = setup();
-        receive_config(&od, &srdo);
+        let (_g, od, srdo) = setup_receiving();
         set(&od, 0x1381, 1, 0x6600_0120);
         set(&od, 0x1381, 2, 0x6600_0220);
         seal(&od, &srdo);
@@ -658,8 +645,7 @@ mod dynamic {
     // req: SB-2-DUPLICATE, M-2.4-GRANULARITY
     #[test]
     fn duplicate_cob_ids_and_granularity() {
-        let (_g, od, srdo) = setup();
-        receive_config(&od, &srdo);
+        let (_g, od, srdo) = setup_receiving();
         // SRDO 0x1302 transmits 0x6200 sub 1/2 (U8) on the same COB-IDs.
         set(&od, 0x1302, 1, 1);
         set(&od, 0x1302, 5, 0x101);
@@ -694,8 +680,7 @@ mod dynamic {
 
     #[test]
     fn mapp_param_reports_the_variables() {
-        let (_g, od, srdo) = setup();
-        receive_config(&od, &srdo);
+        let (_g, od, srdo) = setup_receiving();
         let p = srdo.mapp_param(&od, 0x1301).unwrap();
         assert_eq!(p.count, 2);
         assert!(core::ptr::eq(
@@ -712,8 +697,7 @@ mod dynamic {
     // req: M-2.5.2-RECEIVE
     #[test]
     fn valid_pair_writes_both_variables_and_reports() {
-        let (_g, od, mut srdo) = setup();
-        receive_config(&od, &srdo);
+        let (_g, od, mut srdo) = setup_receiving();
         operational(&od, &mut srdo, 1000);
         let mut q = ActionQueue::new();
         assert!(srdo.on_frame(
@@ -739,37 +723,26 @@ mod dynamic {
         assert!(!srdo.on_frame(NmtState::Operational, &rx(0x103, &[1, 2], 1012), &mut q));
     }
 
+    /// Every mapped variable of the test dictionary.
+    fn mapped() -> [&'static [AtomicU8]; 8] {
+        [
+            &NORMAL, &INVERTED, &RO_VAR, &NOMAP_VAR, &U32_VAR, &U32_VAR_I, &WIDE_N, &WIDE_I,
+        ]
+    }
+
     /// Every mapped variable of the test dictionary, byte by byte.
     fn variables() -> Vec<u8> {
-        [
-            &NORMAL[..],
-            &INVERTED[..],
-            &RO_VAR[..],
-            &NOMAP_VAR[..],
-            &U32_VAR[..],
-            &U32_VAR_I[..],
-            &WIDE_N[..],
-            &WIDE_I[..],
-        ]
-        .iter()
-        .flat_map(|v| {
-            v.iter()
-                .map(|b| b.load(core::sync::atomic::Ordering::Relaxed))
-        })
-        .collect()
+        mapped()
+            .iter()
+            .flat_map(|v| {
+                v.iter()
+                    .map(|b| b.load(core::sync::atomic::Ordering::Relaxed))
+            })
+            .collect()
     }
 
     fn clear_variables() {
-        for v in [
-            &NORMAL[..],
-            &INVERTED[..],
-            &RO_VAR[..],
-            &NOMAP_VAR[..],
-            &U32_VAR[..],
-            &U32_VAR_I[..],
-            &WIDE_N[..],
-            &WIDE_I[..],
-        ] {
+        for v in mapped() {
             for b in v {
                 b.store(0, core::sync::atomic::Ordering::Relaxed);
             }
@@ -842,8 +815,7 @@ mod dynamic {
     // req: SB-5-NO-WRITE-ON-ERROR, M-2.5.3-STATUS
     #[test]
     fn errors_leave_variables_untouched_and_set_status() {
-        let (_g, od, mut srdo) = setup();
-        receive_config(&od, &srdo);
+        let (_g, od, mut srdo) = setup_receiving();
         set(&od, 0x6201, 1, 0x5555);
         set(&od, 0x6301, 1, 0xAAAA);
         operational(&od, &mut srdo, 0);
@@ -898,8 +870,7 @@ mod dynamic {
     // req: M-1.1-SRVT, M-1.1-SCT
     #[test]
     fn srvt_boundary_and_sct_boundary() {
-        let (_g, od, mut srdo) = setup();
-        receive_config(&od, &srdo);
+        let (_g, od, mut srdo) = setup_receiving();
         operational(&od, &mut srdo, 0);
         // Delivers frames one by one like the stack (queue drained between).
         let feed = |srdo: &mut Srdo, frames: &[(u16, [u8; 2], u32)]| {
@@ -1017,8 +988,7 @@ mod dynamic {
     #[test]
     fn srvt_checked_before_second_frame_both_settings() {
         for switch in [false, true] {
-            let (_g, od, mut srdo) = setup();
-            receive_config(&od, &srdo);
+            let (_g, od, mut srdo) = setup_receiving();
             operational(&od, &mut srdo, 0);
             let mut q = ActionQueue::new();
             srdo.on_frame(NmtState::Operational, &rx(0x101, &[1, 0], 10), &mut q);

@@ -1,14 +1,13 @@
 use super::*;
+use crate::sim::nvram::PowerCut;
 
-/// RAM memory with a power cut after `budget` bytes (erased or written)
-/// or after `calls` driver calls; after the cut every call fails.
+/// RAM memory with a power cut (`cut`: after a number of bytes erased or
+/// written, or of driver calls).
 #[derive(Clone)]
 struct Ram {
     mem: [u8; 1024],
     align: u32,
-    budget: Option<usize>,
-    calls: Option<usize>,
-    dead: bool,
+    cut: PowerCut,
 }
 
 impl Ram {
@@ -16,40 +15,20 @@ impl Ram {
         Ram {
             mem: [0xFF; 1024],
             align: 4,
-            budget: None,
-            calls: None,
-            dead: false,
+            cut: PowerCut::default(),
         }
     }
     fn call(&mut self) -> Result<(), NvFault> {
-        if self.dead {
-            return Err(NvFault);
-        }
-        if let Some(c) = self.calls.as_mut() {
-            if *c == 0 {
-                self.dead = true;
-                return Err(NvFault);
-            }
-            *c -= 1;
-        }
-        Ok(())
+        self.cut.call()
     }
     fn byte(&mut self, at: u32, v: u8) -> Result<(), NvFault> {
-        if let Some(b) = self.budget.as_mut() {
-            if *b == 0 {
-                self.dead = true;
-                return Err(NvFault);
-            }
-            *b -= 1;
-        }
+        self.cut.byte()?;
         self.mem[at as usize] = v;
         Ok(())
     }
     /// Restart: power back, no more cuts.
     fn restart(&mut self) {
-        self.budget = None;
-        self.calls = None;
-        self.dead = false;
+        self.cut = PowerCut::default();
     }
 }
 
@@ -348,9 +327,9 @@ fn a_power_cut_after_every_byte_leaves_the_old_or_the_new_image() {
         store(&mut base, &Dict::new(1), KEY, ALL, 0).unwrap();
         // Bytes a complete store erases and writes.
         let mut probe = base.clone();
-        probe.budget = Some(usize::MAX);
+        probe.cut.bytes = Some(usize::MAX);
         store(&mut probe, &Dict::new(2), KEY, ALL, 0).unwrap();
-        let total = usize::MAX - probe.budget.unwrap();
+        let total = usize::MAX - probe.cut.bytes.unwrap();
         // Old until the header's CRC is written, new from then on (the
         // header's padding up to PAYLOAD_OFFSET follows it): the last
         // `padding + 1` cuts restore the new image.
@@ -364,7 +343,7 @@ fn a_power_cut_after_every_byte_leaves_the_old_or_the_new_image() {
         let (mut old, mut new) = (0, 0);
         for &cut in &cuts {
             let mut nv = base.clone();
-            nv.budget = Some(cut);
+            nv.cut.bytes = Some(cut);
             let r = store(&mut nv, &Dict::new(2), KEY, ALL, 0);
             assert_eq!(r.is_ok(), cut == total, "cut {cut}");
             let g = restored_generation(&mut nv);
@@ -393,14 +372,14 @@ fn a_power_cut_after_every_driver_call_leaves_the_old_or_the_new_image() {
     store(&mut base, &Dict::new(1), KEY, ALL, 0).unwrap();
     store(&mut base, &Dict::new(1), KEY, ALL, 0).unwrap();
     let mut probe = base.clone();
-    probe.calls = Some(usize::MAX);
+    probe.cut.calls = Some(usize::MAX);
     store(&mut probe, &Dict::new(2), KEY, ALL, 0).unwrap();
-    let total = usize::MAX - probe.calls.unwrap();
+    let total = usize::MAX - probe.cut.calls.unwrap();
     assert!(total > 4);
     let mut new = 0;
     for cut in 0..=total {
         let mut nv = base.clone();
-        nv.calls = Some(cut);
+        nv.cut.calls = Some(cut);
         let _ = store(&mut nv, &Dict::new(2), KEY, ALL, 0);
         if restored_generation(&mut nv) == 2 {
             new += 1;

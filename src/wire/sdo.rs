@@ -955,6 +955,27 @@ mod tests {
 
     const M6200: Multiplexer = Multiplexer::new(0x6200, 1);
 
+    /// `frame` encodes to `bytes` and `bytes` decode to `frame`.
+    fn both_ways<F: PartialEq + core::fmt::Debug>(
+        encode: fn(&F) -> [u8; FRAME_LEN],
+        decode: fn(&[u8; FRAME_LEN]) -> Result<F, DecodeError>,
+        bytes: [u8; FRAME_LEN],
+        frame: F,
+    ) {
+        assert_eq!(encode(&frame), bytes);
+        assert_eq!(decode(&bytes), Ok(frame));
+    }
+
+    /// [`both_ways`] for a client (request) frame.
+    fn client(bytes: [u8; FRAME_LEN], frame: ClientFrame) {
+        both_ways(ClientFrame::encode, ClientFrame::decode, bytes, frame);
+    }
+
+    /// [`both_ways`] for a server (response) frame.
+    fn server(bytes: [u8; FRAME_LEN], frame: ServerFrame) {
+        both_ways(ServerFrame::encode, ServerFrame::decode, bytes, frame);
+    }
+
     #[test]
     fn seed_004_example_1_expedited_write_u8() {
         // Seed 004 "Beispiel 1": 602 2F 00 62 01 FF 00 00 00 -> 582 60 00 62 01 00 00 00 00.
@@ -1198,62 +1219,55 @@ mod tests {
         // CiA 301 initiate SDO block download protocol: ccs = 6 (bits 7..5),
         // cc = bit 2, s = bit 1, cs = 0; size in bytes 4..7. 300 bytes to
         // 0x2000.0 with CRC: C6 00 20 00 2C 01 00 00.
-        let req = [0xC6, 0x00, 0x20, 0x00, 0x2C, 0x01, 0x00, 0x00];
-        let f = ClientFrame::BlockDownloadInitiate {
-            mux: Multiplexer::new(0x2000, 0),
+        let mux = Multiplexer::new(0x2000, 0);
+        let sized = ClientFrame::BlockDownloadInitiate {
+            mux,
             crc: true,
             size: Some(300),
         };
-        assert_eq!(ClientFrame::decode(&req).unwrap(), f);
-        assert_eq!(f.encode(), req);
+        client([0xC6, 0x00, 0x20, 0x00, 0x2C, 0x01, 0x00, 0x00], sized);
         // Neither CRC nor size: C0.
         let bare = ClientFrame::BlockDownloadInitiate {
-            mux: Multiplexer::new(0x2000, 0),
+            mux,
             crc: false,
             size: None,
         };
-        assert_eq!(bare.encode(), [0xC0, 0x00, 0x20, 0x00, 0, 0, 0, 0]);
-        assert_eq!(ClientFrame::decode(&bare.encode()).unwrap(), bare);
+        client([0xC0, 0x00, 0x20, 0x00, 0, 0, 0, 0], bare);
         // Response: scs = 5, sc = bit 2, ss = 0, blksize in byte 4: A4 .. 7F.
-        let resp = [0xA4, 0x00, 0x20, 0x00, 0x7F, 0x00, 0x00, 0x00];
-        let r = ServerFrame::BlockDownloadInitiateResponse {
-            mux: Multiplexer::new(0x2000, 0),
+        let resp = ServerFrame::BlockDownloadInitiateResponse {
+            mux,
             crc: true,
             blksize: 127,
         };
-        assert_eq!(ServerFrame::decode(&resp).unwrap(), r);
-        assert_eq!(r.encode(), resp);
+        server([0xA4, 0x00, 0x20, 0x00, 0x7F, 0x00, 0x00, 0x00], resp);
     }
 
     #[test]
-    fn block_download_confirmation_and_end() {
-        // CiA 301 download SDO block segment protocol, server side:
-        // scs = 5, ss = 2, ackseq in byte 1, blksize in byte 2.
-        let ack = [0xA2, 0x05, 0x06, 0, 0, 0, 0, 0];
-        let a = ServerFrame::BlockDownloadAck {
-            ackseq: 5,
-            blksize: 6,
+    fn block_confirmation_and_end_alike_in_both_directions() {
+        // CiA 301 download / upload SDO block segment and end protocols: the
+        // receiver of the data confirms a sub-block with 5 in bits 7..5 and
+        // 2 in bits 1..0, ackseq in byte 1, blksize in byte 2 (A2); the
+        // sender ends with 6 in bits 7..5, n in bits 4..2, 1 in bits 1..0
+        // and the CRC in bytes 1..2 (little-endian); the receiver answers
+        // 5 / 1 (A1). Download: the server confirms, the client ends;
+        // upload: the other way round.
+        let ack = |bytes, ackseq, blksize| {
+            server(bytes, ServerFrame::BlockDownloadAck { ackseq, blksize });
+            client(bytes, ClientFrame::BlockUploadAck { ackseq, blksize });
         };
-        assert_eq!(ServerFrame::decode(&ack).unwrap(), a);
-        assert_eq!(a.encode(), ack);
-        // CiA 301 end SDO block download protocol: ccs = 6, n in bits 4..2,
-        // cs = 1, CRC in bytes 1..2 (little-endian). n = 3: 0xCD.
-        let end = [0xCD, 0x34, 0x12, 0, 0, 0, 0, 0];
-        let e = ClientFrame::BlockDownloadEnd {
-            unused: 3,
-            crc: 0x1234,
+        let end = |bytes, unused, crc| {
+            client(bytes, ClientFrame::BlockDownloadEnd { unused, crc });
+            server(bytes, ServerFrame::BlockUploadEnd { unused, crc });
         };
-        assert_eq!(ClientFrame::decode(&end).unwrap(), e);
-        assert_eq!(e.encode(), end);
-        // Response: scs = 5, ss = 1: A1.
-        assert_eq!(
-            ServerFrame::BlockDownloadEndResponse.encode(),
-            [0xA1, 0, 0, 0, 0, 0, 0, 0]
-        );
-        assert_eq!(
-            ServerFrame::decode(&[0xA1, 0, 0, 0, 0, 0, 0, 0]).unwrap(),
-            ServerFrame::BlockDownloadEndResponse
-        );
+        ack([0xA2, 0x05, 0x06, 0, 0, 0, 0, 0], 5, 6);
+        // n = 3: 0xCD.
+        end([0xCD, 0x34, 0x12, 0, 0, 0, 0, 0], 3, 0x1234);
+        ack([0xA2, 0x7F, 0x7F, 0, 0, 0, 0, 0], 127, 127);
+        // n = 6: 0xD9.
+        end([0xD9, 0xC3, 0x31, 0, 0, 0, 0, 0], 6, 0x31C3);
+        let done = [0xA1, 0, 0, 0, 0, 0, 0, 0];
+        server(done, ServerFrame::BlockDownloadEndResponse);
+        client(done, ClientFrame::BlockUploadEndResponse);
     }
 
     #[test]
@@ -1261,55 +1275,23 @@ mod tests {
         // CiA 301 initiate SDO block upload protocol: ccs = 5, cc = bit 2,
         // cs = 0, blksize in byte 4, pst in byte 5. 0x1008.0, 127
         // segments, pst 21: A4 08 10 00 7F 15 00 00.
-        let req = [0xA4, 0x08, 0x10, 0x00, 0x7F, 0x15, 0x00, 0x00];
-        let f = ClientFrame::BlockUploadInitiate {
-            mux: Multiplexer::new(0x1008, 0),
+        let mux = Multiplexer::new(0x1008, 0);
+        let req = ClientFrame::BlockUploadInitiate {
+            mux,
             crc: true,
             blksize: 127,
             pst: 21,
         };
-        assert_eq!(ClientFrame::decode(&req).unwrap(), f);
-        assert_eq!(f.encode(), req);
+        client([0xA4, 0x08, 0x10, 0x00, 0x7F, 0x15, 0x00, 0x00], req);
         // Response: scs = 6, sc = bit 2, s = bit 1, ss = 0, size 42.
-        let resp = [0xC6, 0x08, 0x10, 0x00, 0x2A, 0x00, 0x00, 0x00];
-        let r = ServerFrame::BlockUploadInitiateResponse {
-            mux: Multiplexer::new(0x1008, 0),
+        let resp = ServerFrame::BlockUploadInitiateResponse {
+            mux,
             crc: true,
             size: Some(42),
         };
-        assert_eq!(ServerFrame::decode(&resp).unwrap(), r);
-        assert_eq!(r.encode(), resp);
+        server([0xC6, 0x08, 0x10, 0x00, 0x2A, 0x00, 0x00, 0x00], resp);
         // Start: ccs = 5, cs = 3: A3.
-        assert_eq!(
-            ClientFrame::BlockUploadStart.encode(),
-            [0xA3, 0, 0, 0, 0, 0, 0, 0]
-        );
-        assert_eq!(
-            ClientFrame::decode(&[0xA3, 0, 0, 0, 0, 0, 0, 0]).unwrap(),
-            ClientFrame::BlockUploadStart
-        );
-        // Confirmation: ccs = 5, cs = 2, ackseq, blksize: A2 7F 7F.
-        let ack = [0xA2, 0x7F, 0x7F, 0, 0, 0, 0, 0];
-        let a = ClientFrame::BlockUploadAck {
-            ackseq: 127,
-            blksize: 127,
-        };
-        assert_eq!(ClientFrame::decode(&ack).unwrap(), a);
-        assert_eq!(a.encode(), ack);
-        // End request: scs = 6, n in bits 4..2, ss = 1; n = 6 -> 0xD9.
-        let end = [0xD9, 0xC3, 0x31, 0, 0, 0, 0, 0];
-        let e = ServerFrame::BlockUploadEnd {
-            unused: 6,
-            crc: 0x31C3,
-        };
-        assert_eq!(ServerFrame::decode(&end).unwrap(), e);
-        assert_eq!(e.encode(), end);
-        // End response: ccs = 5, cs = 1: A1.
-        assert_eq!(
-            ClientFrame::decode(&[0xA1, 0, 0, 0, 0, 0, 0, 0]).unwrap(),
-            ClientFrame::BlockUploadEndResponse
-        );
-        assert_eq!(ClientFrame::BlockUploadEndResponse.encode()[0], 0xA1);
+        client([0xA3, 0, 0, 0, 0, 0, 0, 0], ClientFrame::BlockUploadStart);
     }
 
     #[test]

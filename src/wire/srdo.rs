@@ -223,43 +223,24 @@ mod tests {
     fn cob_id_rules_of_manual_1_1_1() {
         assert!(SrdoCobIds::new(0x101, 0x102).is_ok());
         assert!(SrdoCobIds::new(0x17F, 0x180).is_ok());
-        assert_eq!(
-            SrdoCobIds::new(0x100, 0x101),
-            Err(CobIdError::OutOfRange),
-            "below 0x101"
-        );
-        assert_eq!(
-            SrdoCobIds::new(0x181, 0x182),
-            Err(CobIdError::OutOfRange),
-            "above 0x180"
-        );
-        // Each identifier is checked on its own: a valid first one does not
-        // let an out-of-range second one through.
-        assert_eq!(
-            SrdoCobIds::new(0x101, 0x100),
-            Err(CobIdError::OutOfRange),
-            "second below 0x101"
-        );
-        assert_eq!(
-            SrdoCobIds::new(0x17F, 0x181),
-            Err(CobIdError::OutOfRange),
-            "second above 0x180"
-        );
-        assert_eq!(SrdoCobIds::new(0x102, 0x103), Err(CobIdError::NotOdd));
-        assert_eq!(
-            SrdoCobIds::new(0x101, 0x104),
-            Err(CobIdError::NotConsecutive)
-        );
-        assert_eq!(
-            SrdoCobIds::new(0x8000_0101, 0x102),
-            Err(CobIdError::ReservedBits),
-            "bit 31 is reserved (table 3)"
-        );
-        assert_eq!(
-            SrdoCobIds::new(0x101, 0x0000_0902),
-            Err(CobIdError::ReservedBits),
-            "bit 11 is reserved (table 3)"
-        );
+        use CobIdError::{NotConsecutive, NotOdd, OutOfRange, ReservedBits};
+        let refused = [
+            (0x100, 0x101, OutOfRange), // below 0x101
+            (0x181, 0x182, OutOfRange), // above 0x180
+            // Each identifier is checked on its own: a valid first one does
+            // not let an out-of-range second one through.
+            (0x101, 0x100, OutOfRange),
+            (0x17F, 0x181, OutOfRange),
+            (0x102, 0x103, NotOdd),
+            (0x101, 0x104, NotConsecutive),
+            // Bits 31 and 11 are reserved (table 3).
+            (0x8000_0101, 0x102, ReservedBits),
+            (0x101, 0x0000_0902, ReservedBits),
+        ];
+        for (normal, inverted, error) in refused {
+            let got = SrdoCobIds::new(normal, inverted);
+            assert_eq!(got, Err(error), "{normal:#x} / {inverted:#x}");
+        }
     }
 
     #[test]

@@ -4,7 +4,9 @@
 use super::*;
 use crate::od::dcf::{EntrySpec, encode, encoded_len};
 
-fn container(entries: &[(u16, u8, u8, &[u8])]) -> Vec<u8> {
+/// A container of `(index, sub, attribute, data)` entries, with or without
+/// the attribute bytes.
+fn container_of(entries: &[(u16, u8, u8, &[u8])], attributes: bool) -> Vec<u8> {
     let specs: Vec<EntrySpec<'_>> = entries
         .iter()
         .map(|(index, sub, attr, data)| EntrySpec {
@@ -14,10 +16,15 @@ fn container(entries: &[(u16, u8, u8, &[u8])]) -> Vec<u8> {
             attr: *attr,
         })
         .collect();
-    let n = encoded_len(&specs, None, true, None).unwrap();
+    let n = encoded_len(&specs, None, attributes, None).unwrap();
     let mut out = vec![0u8; n];
-    encode(&specs, None, true, None, &mut out).unwrap();
+    encode(&specs, None, attributes, None, &mut out).unwrap();
     out
+}
+
+/// A container with attribute bytes.
+fn container(entries: &[(u16, u8, u8, &[u8])]) -> Vec<u8> {
+    container_of(entries, true)
 }
 
 fn plan<'a>(bytes: &'a [u8]) -> Result<Plan<'a>, CopKernel> {
@@ -97,35 +104,11 @@ fn types_follow_the_attribute_or_seed_table_2() {
 
 #[test]
 fn new_objects_without_attributes_are_refused() {
-    let specs = [EntrySpec {
-        index: 0x2100,
-        sub: 0,
-        data: &[1],
-        attr: 0x70,
-    }];
-    let n = encoded_len(&specs, None, false, None).unwrap();
-    let mut out = vec![0u8; n];
-    encode(&specs, None, false, None, &mut out).unwrap();
-    assert_eq!(plan(&out).unwrap_err(), CopKernel::DynInvalidConfig);
+    let new = container_of(&[(0x2100, 0, 0x70, &[1])], false);
+    assert_eq!(plan(&new).unwrap_err(), CopKernel::DynInvalidConfig);
     // Existing objects and network variables need none.
-    let specs = [
-        EntrySpec {
-            index: 0x1017,
-            sub: 0,
-            data: &[1, 0],
-            attr: 0,
-        },
-        EntrySpec {
-            index: 0xA4C0,
-            sub: 1,
-            data: &[1],
-            attr: 0,
-        },
-    ];
-    let n = encoded_len(&specs, None, false, None).unwrap();
-    let mut out = vec![0u8; n];
-    encode(&specs, None, false, None, &mut out).unwrap();
-    assert!(plan(&out).is_ok());
+    let existing = container_of(&[(0x1017, 0, 0, &[1, 0]), (0xA4C0, 1, 0, &[1])], false);
+    assert!(plan(&existing).is_ok());
 }
 
 #[test]
@@ -294,24 +277,15 @@ fn decisions<'a>(p: &Plan<'a>, od: &ObjectDictionary) -> Decisions<'a> {
 /// heartbeat, identity, RPDO 1 and TPDO 1 invalid, TPDO 2 valid (so the
 /// sequence invalidates it first), a mappable U8 and a U32.
 mod pdo_od {
-    use crate::od::{Access, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
+    use crate::od::{Access, DataType, ObdEntry, ObdSubEntry, ObjectDictionary};
     use crate::pdo::PDO_MAX_MAPPENTRIES;
     use crate::pdo::decl::{
         CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs,
     };
-    use core::sync::atomic::AtomicU8;
 
     static DEVICE: [u8; 4] = 0x0001_0191u32.to_ne_bytes();
     static S1000: [ObdSubEntry; 1] = [ObdSubEntry::rom(0, DataType::UInt32, Access::R, &DEVICE)];
-    static HB: [AtomicU8; 2] = decl::zeroed();
-    static HB_DEF: [u8; 2] = 0u16.to_ne_bytes();
-    static S1017: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt16,
-        Access::SRW,
-        &HB,
-        Some(&HB_DEF),
-    )];
+    crate::od_ram!(static S1017, HB: u16 = 0 => UInt16, SRW);
     static VENDOR: [u8; 4] = 0x0000_0123u32.to_ne_bytes();
     static S1018: [ObdSubEntry; 2] = [
         ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[1]),
@@ -335,22 +309,8 @@ mod pdo_od {
     static V1A01: MappVars = MappVars::new();
     static D1A01: MappDefaults = MappDefaults::new(&[0x2000_0008]);
     static S1A01: [ObdSubEntry; PDO_MAX_MAPPENTRIES + 1] = mapp_subs(&V1A01, &D1A01);
-    static V2000: [AtomicU8; 1] = decl::zeroed();
-    static S2000: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt8,
-        Access::PRW,
-        &V2000,
-        Some(&[0]),
-    )];
-    static V2002: [AtomicU8; 4] = decl::zeroed();
-    static S2002: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-        0,
-        DataType::UInt32,
-        Access::RW,
-        &V2002,
-        Some(&[0; 4]),
-    )];
+    crate::od_ram!(static S2000, V2000: u8 = 0 => UInt8, PRW);
+    crate::od_ram!(static S2002, V2002: u32 = 0 => UInt32, RW);
     static GENERIC: [ObdEntry; 9] = [
         ObdEntry::new(0x1000, &S1000, None),
         ObdEntry::new(0x1017, &S1017, None),

@@ -43,13 +43,7 @@ macro_rules! test_od {
             &U16_VAR,
             &U16_LIMITS,
         )];
-        static S2002: [ObdSubEntry; 1] = [ObdSubEntry::ram(
-            0,
-            DataType::UInt32,
-            Access::R,
-            &RO_VAR,
-            None,
-        )];
+        static S2002: [ObdSubEntry; 1] = decl::ram_object(DataType::UInt32, Access::R, &RO_VAR);
         crate::od_ram!(static S2003, WO_VAR: u32 => UInt32, W);
         static S2004: [ObdSubEntry; 1] = [ObdSubEntry::ram_string(0, Access::RW, &STR_VAR, c"")];
         crate::od_ram!(static S2005, U64_VAR: u64 => UInt64, RW);

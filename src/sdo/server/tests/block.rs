@@ -39,11 +39,34 @@ fn ack(ackseq: u8, blksize: u8) -> [u8; 8] {
 }
 
 /// n of the end frame for `len` bytes.
+/// `reply` is the abort of the transfer of 0x2004.0 (the test domain)
+/// with `code`.
+#[track_caller]
+fn aborted(reply: Option<[u8; 8]>, code: SdoAbort) {
+    assert_eq!(reply, Some(abort_bytes(0x2004, 0, code)));
+}
+
 fn unused(len: usize) -> u8 {
     (len.div_ceil(7).max(1) * 7 - len) as u8
 }
 
+/// What 0x2004 holds before a download that must fail.
+const KEEP: &[u8] = b"keep";
+
 impl Rig {
+    /// A rig whose 0x2004 holds [`KEEP`].
+    fn keeping() -> Rig {
+        let rig = Rig::new(test_od!());
+        rig.set(0x2004, 0, KEEP);
+        rig
+    }
+
+    /// 0x2004 still holds [`KEEP`] and nothing was stored.
+    fn kept(&self) {
+        assert_eq!(self.read(0x2004, 0), KEEP);
+        assert_eq!(self.hooks.stores, 0);
+    }
+
     fn seg(&mut self, seqno: u8, last: bool, data: &[u8]) -> Option<[u8; 8]> {
         self.req(BlockSegment::new(seqno, last, data).unwrap().encode())
     }
@@ -81,6 +104,14 @@ impl Rig {
         reply
     }
 
+    /// Starts a block download of `announced` bytes (with CRC) to 0x2004.0
+    /// and sends `data` as its first sub-block; returns the confirmation.
+    fn first_sub_block(&mut self, announced: usize, data: &[u8]) -> Option<[u8; 8]> {
+        self.req(init_download(0x2004, true, Some(announced)))
+            .unwrap();
+        self.sub_block(data, 0, B, &[])
+    }
+
     /// A whole block download of `data` to `index`.0 with CRC; returns the
     /// answer to the end frame.
     fn block_download(&mut self, index: u16, data: &[u8]) -> [u8; 8] {
@@ -98,6 +129,23 @@ impl Rig {
         }
         self.req(end_download(unused(data.len()), block_crc(0, data)))
             .unwrap()
+    }
+
+    /// Starts a block upload of 0x2004.0 in sub-blocks of `blksize` (no
+    /// protocol switch), up to the client's start request (answered by
+    /// segments, not by a response).
+    fn start_upload(&mut self, blksize: u8) {
+        self.req(init_upload(0x2004, blksize, 0)).unwrap();
+        assert_eq!(self.req([0xA3, 0, 0, 0, 0, 0, 0, 0]), None);
+    }
+
+    /// A rig whose 0x2004 holds `data`, its block upload started in
+    /// sub-blocks of `blksize` ([`Rig::start_upload`]).
+    fn uploading(data: &[u8], blksize: u8) -> Rig {
+        let mut rig = Rig::new(test_od!());
+        rig.set(0x2004, 0, data);
+        rig.start_upload(blksize);
+        rig
     }
 
     /// Hands out every pending upload segment as the stack would.
@@ -205,40 +253,33 @@ fn lost_last_segment_is_confirmed_after_half_the_timeout() {
 
 #[test]
 fn wrong_sequence_numbers_abort_with_0x05040003() {
-    let mut rig = Rig::new(test_od!());
-    rig.set(0x2004, 0, b"keep");
+    let mut rig = Rig::keeping();
     rig.req(init_download(0x2004, true, Some(30))).unwrap();
     // seqno 0 (byte 0 = 0x00) is no segment number.
-    assert_eq!(
+    aborted(
         rig.req([0x00, 1, 2, 3, 4, 5, 6, 7]),
-        Some(abort_bytes(0x2004, 0, SdoAbort::InvalidSequenceNumber))
+        SdoAbort::InvalidSequenceNumber,
     );
     assert!(!rig.server.is_busy());
     if B < 127 {
         rig.req(init_download(0x2004, true, Some(30))).unwrap();
         rig.seg(1, false, &[0; 7]);
-        assert_eq!(
+        aborted(
             rig.seg(B + 1, false, &[0; 7]),
-            Some(abort_bytes(0x2004, 0, SdoAbort::InvalidSequenceNumber))
+            SdoAbort::InvalidSequenceNumber,
         );
     }
-    assert_eq!(rig.read(0x2004, 0), b"keep".to_vec());
-    assert_eq!(rig.hooks.stores, 0);
+    rig.kept();
 }
 
 #[test]
 fn crc_error_aborts_with_0x05040004_and_writes_nothing() {
-    let mut rig = Rig::new(test_od!());
-    rig.set(0x2004, 0, b"keep");
+    let mut rig = Rig::keeping();
     let data = text(12);
-    rig.req(init_download(0x2004, true, Some(12))).unwrap();
-    assert_eq!(rig.sub_block(&data, 0, B, &[]), Some(ack(2, B)));
+    assert_eq!(rig.first_sub_block(12, &data), Some(ack(2, B)));
     let wrong = block_crc(0, &data) ^ 0x0001;
-    assert_eq!(
-        rig.req(end_download(unused(12), wrong)),
-        Some(abort_bytes(0x2004, 0, SdoAbort::CrcError))
-    );
-    assert_eq!(rig.read(0x2004, 0), b"keep".to_vec());
+    aborted(rig.req(end_download(unused(12), wrong)), SdoAbort::CrcError);
+    rig.kept();
     // A client without CRC support (cc = 0) sends 0: not checked.
     rig.req(init_download(0x2004, false, Some(12))).unwrap();
     rig.sub_block(&data, 0, B, &[]).unwrap();
@@ -251,37 +292,31 @@ fn crc_error_aborts_with_0x05040004_and_writes_nothing() {
 
 #[test]
 fn size_mismatch_aborts_with_0x06070010() {
-    let mut rig = Rig::new(test_od!());
-    rig.set(0x2004, 0, b"keep");
+    let mut rig = Rig::keeping();
     // 20 announced, 13 sent: found at the end frame.
     let short = text(13);
-    rig.req(init_download(0x2004, true, Some(20))).unwrap();
-    assert_eq!(rig.sub_block(&short, 0, B, &[]), Some(ack(2, B)));
-    assert_eq!(
+    assert_eq!(rig.first_sub_block(20, &short), Some(ack(2, B)));
+    aborted(
         rig.req(end_download(unused(13), block_crc(0, &short))),
-        Some(abort_bytes(0x2004, 0, SdoAbort::LengthMismatch))
+        SdoAbort::LengthMismatch,
     );
     // 8 announced, a third segment (bytes 14..) is more than that: at once.
     if B >= 3 {
         rig.req(init_download(0x2004, true, Some(8))).unwrap();
         assert_eq!(rig.seg(1, false, &[1; 7]), None);
         assert_eq!(rig.seg(2, false, &[2; 7]), None);
-        assert_eq!(
-            rig.seg(3, true, &[3]),
-            Some(abort_bytes(0x2004, 0, SdoAbort::LengthMismatch))
-        );
+        aborted(rig.seg(3, true, &[3]), SdoAbort::LengthMismatch);
     }
-    assert_eq!(rig.read(0x2004, 0), b"keep".to_vec());
-    assert_eq!(rig.hooks.stores, 0);
+    rig.kept();
 }
 
 #[test]
 fn download_longer_than_the_buffer_is_0x06070012() {
     let mut rig = Rig::new(test_od!());
     // Stated at initiate.
-    assert_eq!(
+    aborted(
         rig.req(init_download(0x2004, true, Some(SDOS_BUFFER_SIZE + 1))),
-        Some(abort_bytes(0x2004, 0, SdoAbort::LengthTooHigh))
+        SdoAbort::LengthTooHigh,
     );
     // Not stated: the segment that starts beyond the buffer.
     let data = text(SDOS_BUFFER_SIZE + 7);
@@ -296,7 +331,7 @@ fn download_longer_than_the_buffer_is_0x06070012() {
         }
         first += usize::from(B);
     }
-    assert_eq!(last, Some(abort_bytes(0x2004, 0, SdoAbort::LengthTooHigh)));
+    aborted(last, SdoAbort::LengthTooHigh);
     assert!(!rig.server.is_busy());
 }
 
@@ -345,12 +380,11 @@ fn abort_and_short_frames_inside_a_sub_block() {
 fn unexpected_request_before_the_end_frame_is_0x05040001() {
     let mut rig = Rig::new(test_od!());
     let data = text(5);
-    rig.req(init_download(0x2004, true, Some(5))).unwrap();
-    assert_eq!(rig.sub_block(&data, 0, B, &[]), Some(ack(1, B)));
+    assert_eq!(rig.first_sub_block(5, &data), Some(ack(1, B)));
     // An upload request where the end frame belongs.
-    assert_eq!(
+    aborted(
         rig.req([0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0]),
-        Some(abort_bytes(0x2004, 0, SdoAbort::UnknownCommand))
+        SdoAbort::UnknownCommand,
     );
 }
 
@@ -373,10 +407,7 @@ fn block_download_timeout() {
     // A segment after the timeout (without poll) gets the same answer.
     rig.req(init_download(0x2004, true, Some(20))).unwrap();
     rig.now = rig.now.plus(SDOS_DEFAULT_TIMEOUT);
-    assert_eq!(
-        rig.seg(1, false, &[0; 7]),
-        Some(abort_bytes(0x2004, 0, SdoAbort::Timeout))
-    );
+    aborted(rig.seg(1, false, &[0; 7]), SdoAbort::Timeout);
 }
 
 /// Block upload initiate request.
@@ -419,11 +450,8 @@ fn block_upload_in_sub_blocks_with_crc() {
 
 #[test]
 fn block_upload_sends_again_after_ackseq() {
-    let mut rig = Rig::new(test_od!());
     let data = text(30);
-    rig.set(0x2004, 0, &data);
-    rig.req(init_upload(0x2004, 3, 0)).unwrap();
-    rig.req([0xA3, 0, 0, 0, 0, 0, 0, 0]);
+    let mut rig = Rig::uploading(&data, 3);
     assert_eq!(rig.drain_segments().len(), 3);
     // The client got segment 1 only.
     assert_eq!(rig.req(ack(1, 3)), None);
@@ -446,19 +474,13 @@ fn block_upload_sends_again_after_ackseq() {
     );
     assert_eq!(f.data[0], 0x81, "segment 5 of 5, c = 1");
     // A confirmation naming more segments than were sent: 0x05040003.
-    assert_eq!(
-        rig.req(ack(2, 3)),
-        Some(abort_bytes(0x2004, 0, SdoAbort::InvalidSequenceNumber))
-    );
+    aborted(rig.req(ack(2, 3)), SdoAbort::InvalidSequenceNumber);
 }
 
 #[test]
 fn block_upload_final_crc_counts_each_byte_once() {
-    let mut rig = Rig::new(test_od!());
     let data = text(21);
-    rig.set(0x2004, 0, &data);
-    rig.req(init_upload(0x2004, 3, 0)).unwrap();
-    rig.req([0xA3, 0, 0, 0, 0, 0, 0, 0]);
+    let mut rig = Rig::uploading(&data, 3);
     rig.drain_segments();
     assert_eq!(rig.req(ack(0, 3)), None);
     rig.drain_segments();
@@ -472,26 +494,18 @@ fn invalid_block_sizes_are_0x05040002() {
     let mut rig = Rig::new(test_od!());
     rig.set(0x2004, 0, &text(40));
     for blksize in [0u8, 128] {
-        assert_eq!(
+        aborted(
             rig.req(init_upload(0x2004, blksize, 0)),
-            Some(abort_bytes(0x2004, 0, SdoAbort::InvalidBlockSize))
+            SdoAbort::InvalidBlockSize,
         );
     }
     // In a confirmation of a running upload.
-    rig.req(init_upload(0x2004, 2, 0)).unwrap();
-    rig.req([0xA3, 0, 0, 0, 0, 0, 0, 0]);
+    rig.start_upload(2);
     rig.drain_segments();
-    assert_eq!(
-        rig.req(ack(2, 128)),
-        Some(abort_bytes(0x2004, 0, SdoAbort::InvalidBlockSize))
-    );
-    rig.req(init_upload(0x2004, 2, 0)).unwrap();
-    rig.req([0xA3, 0, 0, 0, 0, 0, 0, 0]);
+    aborted(rig.req(ack(2, 128)), SdoAbort::InvalidBlockSize);
+    rig.start_upload(2);
     rig.drain_segments();
-    assert_eq!(
-        rig.req(ack(2, 0)),
-        Some(abort_bytes(0x2004, 0, SdoAbort::InvalidBlockSize))
-    );
+    aborted(rig.req(ack(2, 0)), SdoAbort::InvalidBlockSize);
 }
 
 #[test]
@@ -538,10 +552,7 @@ fn block_upload_sends_the_snapshot() {
 fn block_upload_larger_than_the_buffer_and_of_nothing() {
     let mut rig = Rig::new(test_od!());
     rig.set(0x2004, 0, &text(SDOS_BUFFER_SIZE + 1));
-    assert_eq!(
-        rig.req(init_upload(0x2004, 127, 0)),
-        Some(abort_bytes(0x2004, 0, SdoAbort::OutOfMemory))
-    );
+    aborted(rig.req(init_upload(0x2004, 127, 0)), SdoAbort::OutOfMemory);
     assert_eq!(
         rig.req(init_upload(0x2FFF, 127, 0)),
         Some(abort_bytes(0x2FFF, 0, SdoAbort::ObjectNotExist))
@@ -565,10 +576,7 @@ fn block_upload_steps_out_of_order_are_0x05040001() {
     rig.set(0x2004, 0, &text(30));
     rig.req(init_upload(0x2004, 3, 0)).unwrap();
     // A confirmation before the start request.
-    assert_eq!(
-        rig.req(ack(0, 3)),
-        Some(abort_bytes(0x2004, 0, SdoAbort::UnknownCommand))
-    );
+    aborted(rig.req(ack(0, 3)), SdoAbort::UnknownCommand);
     // A start request while no transfer runs.
     assert_eq!(
         rig.req([0xA3, 0, 0, 0, 0, 0, 0, 0]),
@@ -578,10 +586,7 @@ fn block_upload_steps_out_of_order_are_0x05040001() {
 
 #[test]
 fn block_upload_timeout_runs_from_the_last_segment_sent() {
-    let mut rig = Rig::new(test_od!());
-    rig.set(0x2004, 0, &text(30));
-    rig.req(init_upload(0x2004, 3, 0)).unwrap();
-    rig.req([0xA3, 0, 0, 0, 0, 0, 0, 0]);
+    let mut rig = Rig::uploading(&text(30), 3);
     // The driver takes the sub-block late.
     rig.now = rig.now.plus(SDOS_DEFAULT_TIMEOUT - 1);
     rig.drain_segments();
