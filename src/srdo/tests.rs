@@ -616,6 +616,24 @@ mod dynamic {
         assert_eq!(srdo.check_config(&od), refused);
         assert!(E6600_1.attach(&FIT_N));
         assert_eq!(srdo.check_config(&od), Ok(()));
+        // A received pair lands in the attached variables (CPU order).
+        let mut srdo = srdo;
+        operational(&od, &mut srdo, 1000);
+        let mut q = ActionQueue::new();
+        let normal = [0x78, 0x56, 0x34, 0x12];
+        srdo.on_frame(NmtState::Operational, &rx(0x101, &normal, 1010), &mut q);
+        let inverted = normal.map(|b| !b);
+        srdo.on_frame(NmtState::Operational, &rx(0x102, &inverted, 1011), &mut q);
+        let ev = run(&mut srdo, &mut q, manual_app);
+        assert_eq!(ev[0], Event::SrdoEvent(0x1301));
+        let value = |v: &[AtomicU8; 4]| {
+            u32::from_ne_bytes(
+                v.each_ref()
+                    .map(|b| b.load(core::sync::atomic::Ordering::Relaxed)),
+            )
+        };
+        assert_eq!(value(&FIT_N), 0x1234_5678);
+        assert_eq!(value(&FIT_I), !0x1234_5678);
     }
 
     /// Dummy entries (CiA 301 data type indices 0x0001..0x0007): only sub 0,
