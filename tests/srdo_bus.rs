@@ -365,6 +365,23 @@ fn dummy_entries_of_a_receive_srdo_skip_their_bytes() {
     assert_eq!(ev[0], Event::SrdoEvent(IDX));
     assert_eq!(net.consumer_values(), [0x1234, 0x5555, 0xEDCB, 0xAAAA]);
     assert_eq!(net.c.status(IDX), 0x30);
+    // SrdoGetMappParam: no variable behind the dummy entries.
+    let m = net
+        .c
+        .stack
+        .srdo()
+        .mapp_param(net.c.stack.od(), IDX)
+        .unwrap();
+    assert_eq!(m.count, 4);
+    assert!(std::ptr::eq(
+        m.vars[0].unwrap().as_ptr(),
+        net.c.normal.as_ptr()
+    ));
+    assert!(std::ptr::eq(
+        m.vars[1].unwrap().as_ptr(),
+        net.c.inverted.as_ptr()
+    ));
+    assert!(m.vars[2].is_none() && m.vars[3].is_none());
     // The dummy bytes are still checked: a second frame whose bytes 2-3
     // are not the complement is a data error, and nothing is written.
     net.wait_ms(20);

@@ -634,6 +634,11 @@ mod dynamic {
         };
         assert_eq!(value(&FIT_N), 0x1234_5678);
         assert_eq!(value(&FIT_I), !0x1234_5678);
+        // SrdoGetMappParam names the attached variables.
+        let p = srdo.mapp_param(&od, 0x1301).unwrap();
+        assert_eq!(p.count, 2);
+        assert!(core::ptr::eq(p.vars[0].unwrap().as_ptr(), FIT_N.as_ptr()));
+        assert!(core::ptr::eq(p.vars[1].unwrap().as_ptr(), FIT_I.as_ptr()));
     }
 
     /// Dummy entries (CiA 301 data type indices 0x0001..0x0007): only sub 0,
