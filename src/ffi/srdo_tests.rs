@@ -31,6 +31,8 @@ static SENT: Mutex<Vec<(u32, Vec<u8>)>> = Mutex::new(Vec::new());
 static REFUSE: AtomicU32 = AtomicU32::new(0);
 /// The tick counter (100 us), moved by the tests only.
 static TICKS: AtomicU32 = AtomicU32::new(0);
+/// Frames for the stack to read (identifier, data), oldest first.
+static RECEIVED: Mutex<Vec<(u32, Vec<u8>)>> = Mutex::new(Vec::new());
 
 #[unsafe(no_mangle)]
 extern "C" fn CdrvInit(_p: *mut tCdrvInitParam) -> tCopKernel {
@@ -57,8 +59,23 @@ extern "C" fn CdrvWriteMsg(p: *mut tCdrvMsg) -> tCopKernel {
     0
 }
 #[unsafe(no_mangle)]
-extern "C" fn CdrvReadMsg(_pp: *mut *mut tCdrvMsg) -> tCopKernel {
-    CopKernel::CdrvNoMsg.code()
+extern "C" fn CdrvReadMsg(pp: *mut *mut tCdrvMsg) -> tCopKernel {
+    let mut rx = RECEIVED.lock().unwrap();
+    if rx.is_empty() {
+        return CopKernel::CdrvNoMsg.code();
+    }
+    let (id, data) = rx.remove(0);
+    let mut m = tCdrvMsg {
+        m_CanId: id as tCanId,
+        m_bSize: data.len() as u8,
+        ..tCdrvMsg::default()
+    };
+    m.m_bData[..data.len()].copy_from_slice(&data);
+    // One buffer entry per frame, valid until the end of the test program
+    // (a few frames).
+    // SAFETY: the library passes a valid pointer for the entry's address.
+    unsafe { *pp = Box::leak(Box::new(m)) };
+    CopKernel::CdrvMsgHigh.code()
 }
 #[unsafe(no_mangle)]
 extern "C" fn CdrvReleaseMsg(_p: *mut tCdrvMsg) -> tCopKernel {
@@ -108,6 +125,7 @@ impl Node {
         let _ = global::remove();
         REFUSE.store(0, Ordering::SeqCst);
         TICKS.store(0, Ordering::SeqCst);
+        RECEIVED.lock().unwrap().clear();
         let stack = Stack::new(producer::od().unwrap(), 1).unwrap();
         let instance = Instance {
             stack,
@@ -524,4 +542,58 @@ fn delete_instance_stops_and_nmt_event_must_match_the_state() {
     assert_eq!(CcmSendSrdo(0x1301), CopKernel::SrdoNmtError.code());
     assert_eq!(SrdoProcess(), 0);
     assert_eq!(sent(), vec![], "stopped: no refresh either");
+}
+
+// req: M-1.3-GFC
+#[cfg(srdo_use_gfc)]
+#[test]
+fn send_gfc_only_operational_and_enabled() {
+    let node = Node::new();
+    node.seal();
+    assert_eq!(node.write(0x1300, 0, &[0]), 0);
+    node.operational();
+    assert_eq!(SrdoSendGfc(), CopKernel::SrdoInvalid.code(), "0x1300 = 0");
+    assert_eq!(
+        CcmNmtsExecCommand(NmtCommand::EnterPreOperational as u16),
+        0
+    );
+    assert_eq!(node.write(0x1300, 0, &[1]), 0);
+    assert_eq!(
+        CcmSendGfc(),
+        CopKernel::SrdoNmtError.code(),
+        "PRE-OPERATIONAL"
+    );
+    node.operational();
+    assert_eq!(sent(), vec![]);
+    assert_eq!(CcmSendGfc(), 0);
+    // CiA 304: the GFC is identifier 0x001 without data.
+    assert_eq!(sent(), vec![(0x001, vec![])]);
+    REFUSE.store(1, Ordering::SeqCst);
+    assert_eq!(SrdoSendGfc(), CopKernel::CdrvTxBuffHighOverrun.code());
+    assert_eq!(SrdoSendGfc(), 0);
+    assert_eq!(sent().len(), 1);
+}
+
+// req: SB-9-LEAVE
+#[test]
+fn srdo_process_is_a_processing_cycle() {
+    let _node = Node::new();
+    use crate::event::NmtEvent;
+    // CiA 301 NMT "start remote node" for node 1: 0x000 [01 01].
+    RECEIVED.lock().unwrap().push((0x000, vec![0x01, 0x01]));
+    assert_eq!(
+        SrdoNmtEvent(NmtEvent::EnterOperational as u32),
+        CopKernel::SrdoNmtError.code()
+    );
+    assert_eq!(SrdoProcess(), 0);
+    assert!(RECEIVED.lock().unwrap().is_empty(), "the frame was read");
+    assert_eq!(SrdoNmtEvent(NmtEvent::EnterOperational as u32), 0);
+    // "Stop remote node": STOPPED matches kNmtEvEnterStopped only.
+    RECEIVED.lock().unwrap().push((0x000, vec![0x02, 0x01]));
+    assert_eq!(SrdoProcess(), 0);
+    assert_eq!(SrdoNmtEvent(NmtEvent::EnterStopped as u32), 0);
+    assert_eq!(
+        SrdoNmtEvent(NmtEvent::EnterOperational as u32),
+        CopKernel::SrdoNmtError.code()
+    );
 }
