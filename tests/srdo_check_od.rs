@@ -96,27 +96,19 @@ mod mapp_long {
     pub static SUBS: [ObdSubEntry; COUNT + 1] = subs();
 }
 
-static GENERIC_TTYPE: [ObdEntry; 5] = [
-    ObdEntry::new(0x1300, &gfc::SUBS, None),
-    ObdEntry::new(0x1301, &commu_ttype::SUBS, None),
-    ObdEntry::new(0x1381, &mapp::SUBS, None),
-    ObdEntry::new(0x13FE, &cfg_valid::SUBS, None),
-    ObdEntry::new(0x13FF, &crcs::SUBS, None),
-];
-static GENERIC_STRING: [ObdEntry; 5] = [
-    ObdEntry::new(0x1300, &gfc::SUBS, None),
-    ObdEntry::new(0x1301, &commu::SUBS, None),
-    ObdEntry::new(0x1381, &mapp_string::SUBS, None),
-    ObdEntry::new(0x13FE, &cfg_valid::SUBS, None),
-    ObdEntry::new(0x13FF, &crcs::SUBS, None),
-];
-static GENERIC_LONG: [ObdEntry; 5] = [
-    ObdEntry::new(0x1300, &gfc::SUBS, None),
-    ObdEntry::new(0x1301, &commu::SUBS, None),
-    ObdEntry::new(0x1381, &mapp_long::SUBS, None),
-    ObdEntry::new(0x13FE, &cfg_valid::SUBS, None),
-    ObdEntry::new(0x13FF, &crcs::SUBS, None),
-];
+/// The SRDO objects of one dictionary: SRDO 1 with `commu` and `mapp`.
+const fn generic(commu: &'static [ObdSubEntry], mapp: &'static [ObdSubEntry]) -> [ObdEntry; 5] {
+    [
+        ObdEntry::new(0x1300, &gfc::SUBS, None),
+        ObdEntry::new(0x1301, commu, None),
+        ObdEntry::new(0x1381, mapp, None),
+        ObdEntry::new(0x13FE, &cfg_valid::SUBS, None),
+        ObdEntry::new(0x13FF, &crcs::SUBS, None),
+    ]
+}
+static GENERIC_TTYPE: [ObdEntry; 5] = generic(&commu_ttype::SUBS, &mapp::SUBS);
+static GENERIC_STRING: [ObdEntry; 5] = generic(&commu::SUBS, &mapp_string::SUBS);
+static GENERIC_LONG: [ObdEntry; 5] = generic(&commu::SUBS, &mapp_long::SUBS);
 
 /// The dictionaries share the variables of 0x1300, 0x1301, 0x13FE and
 /// 0x13FF: one test at a time.

@@ -453,12 +453,17 @@ fn get_srdo_param_reports_direction_sct_and_mapping() {
     mapping(&node);
 }
 
-#[cfg(not(srdo_static_mapping))]
-fn mapping(node: &Node) {
-    let mut m = tSrdoMappParam {
+/// A `tSrdoMappParam` the library has not written (0xEE objects).
+fn unset_mapp() -> tSrdoMappParam {
+    tSrdoMappParam {
         m_bNoOfMappedObjects: 0xEE,
         m_apMappedVariable: [core::ptr::null_mut(); crate::config::SRDO_MAX_MAPPENTRIES],
-    };
+    }
+}
+
+#[cfg(not(srdo_static_mapping))]
+fn mapping(node: &Node) {
+    let mut m = unset_mapp();
     // SAFETY: `m` is writable.
     assert_eq!(
         unsafe { CcmGetSrdoParam(0x1301, core::ptr::null_mut(), &mut m) },
@@ -501,10 +506,7 @@ fn mapping(node: &Node) {
 
 #[cfg(srdo_static_mapping)]
 fn mapping(_node: &Node) {
-    let mut m = tSrdoMappParam {
-        m_bNoOfMappedObjects: 0xEE,
-        m_apMappedVariable: [core::ptr::null_mut(); crate::config::SRDO_MAX_MAPPENTRIES],
-    };
+    let mut m = unset_mapp();
     // SAFETY: `m` is writable (and refused: no mapping parameters).
     assert_eq!(
         unsafe { CcmGetSrdoParam(0x1301, core::ptr::null_mut(), &mut m) },
