@@ -341,3 +341,55 @@ fn remote_frames_and_foreign_ids_are_ignored() {
     assert!(no_pm(&net.c.cycle()).is_empty());
     assert_eq!(net.consumer_values(), [0, 0, 0, 0]);
 }
+
+// req: M-2.4-DUMMY
+#[cfg(feature = "srdo-dummy-mapping")]
+#[test]
+fn dummy_entries_of_a_receive_srdo_skip_their_bytes() {
+    let mut net = Net::preoperational();
+    // The consumer's second pair becomes two dummy entries (0x0006 =
+    // UNSIGNED16, CiA 301 7.4.7.1): the frames keep 4 bytes, bytes 2-3 go
+    // nowhere. The mapping is written while the SRDO is disabled.
+    net.c.write(0x1301, 1, 0, 1).unwrap();
+    net.c.write(0x1381, 0, 0, 1).unwrap();
+    net.c.write(0x1381, 3, 0x0006_0010, 4).unwrap();
+    net.c.write(0x1381, 4, 0x0006_0010, 4).unwrap();
+    net.c.write(0x1381, 0, 4, 1).unwrap();
+    net.c.write(0x1301, 1, 2, 1).unwrap();
+    net.c.seal().unwrap();
+    net.start();
+    net.set_consumer_values([0, 0x5555, 0, 0xAAAA]);
+    net.wait_ms(1);
+    send_pair(&mut net, 0x1234, 0xBEEF);
+    let ev = net.c.cycle();
+    assert_eq!(ev[0], Event::SrdoEvent(IDX));
+    assert_eq!(net.consumer_values(), [0x1234, 0x5555, 0xEDCB, 0xAAAA]);
+    assert_eq!(net.c.status(IDX), 0x30);
+    // SrdoGetMappParam: no variable behind the dummy entries.
+    let m = net
+        .c
+        .stack
+        .srdo()
+        .mapp_param(net.c.stack.od(), IDX)
+        .unwrap();
+    assert_eq!(m.count, 4);
+    assert!(std::ptr::eq(
+        m.vars[0].unwrap().as_ptr(),
+        net.c.normal.as_ptr()
+    ));
+    assert!(std::ptr::eq(
+        m.vars[1].unwrap().as_ptr(),
+        net.c.inverted.as_ptr()
+    ));
+    assert!(m.vars[2].is_none() && m.vars[3].is_none());
+    // The dummy bytes are still checked: a second frame whose bytes 2-3
+    // are not the complement is a data error, and nothing is written.
+    net.wait_ms(20);
+    net.inject(0x101, &[0x11, 0x11, 0x22, 0x22]);
+    net.inject(0x102, &[0xEE, 0xEE, 0x22, 0x22]);
+    assert_eq!(
+        no_pm(&net.c.cycle()),
+        vec![Event::SrdoError(IDX, CopKernel::SrdoDataError)]
+    );
+    assert_eq!(net.consumer_values(), [0x1234, 0x5555, 0xEDCB, 0xAAAA]);
+}

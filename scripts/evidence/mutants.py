@@ -3,7 +3,10 @@
 per file and switch configuration) into one result per mutant: caught when
 any configuration that builds it catches it. Survivors are compared with the
 equivalent mutants listed, with their argument, in EQUIV; a survivor not
-listed there fails (exit 1).
+listed there fails (exit 1). A file with no run in RUNS_DIR keeps its
+figures, its runs and its survivors from the OUT_JSON written before (runs
+are scratch; the committed result is not lost when one file is mutated
+again).
 
   mutants.py RUNS_DIR OUT_JSON EQUIV_TOML
 """
@@ -20,6 +23,12 @@ RANK = {"caught": 3, "timeout": 2, "missed": 1, "unviable": 0}
 # runs/).
 FILES = {o: [f"{o}.txt"] for o in RANK}
 LOC = re.compile(r"^(?P<file>[^:]+):(?P<line>\d+):(?P<col>\d+): (?P<what>.*)$")
+
+
+def run_name(file):
+    """The folder name scripts/evidence.sh gives a file's runs (without
+    the configuration): src/wire/srdo.rs -> wire-srdo."""
+    return file.removeprefix("src/").removesuffix(".rs").replace("/", "-")
 
 
 def key(text):
@@ -63,6 +72,27 @@ def main():
             survivors.append(entry)
             if entry["argument"] is None:
                 unexplained.append(entry)
+    old = pathlib.Path(out_json)
+    if old.exists():
+        before = json.loads(old.read_text())
+        kept = sorted(set(before.get("files", {})) - set(per_file))
+        for file in kept:
+            per_file[file] = before["files"][file]
+            for entry in before.get("survivors", []):
+                if entry["file"] == file:
+                    entry["argument"] = equiv.get((file, entry["mutant"]))
+                    survivors.append(entry)
+                    if entry["argument"] is None:
+                        unexplained.append(entry)
+        # Run names: the file's path below src/ with "-" for "/" (earlier
+        # runs: the file's stem).
+        stems = tuple(n + "-" for f in kept
+                      for n in (pathlib.Path(f).stem, run_name(f)))
+        for run, counts in before.get("runs", {}).items():
+            if run not in configs and run.startswith(stems):
+                configs[run] = counts
+        per_file = dict(sorted(per_file.items()))
+        survivors.sort(key=lambda e: (e["file"], e["line"]))
     tot = {o: sum(s[o] for s in per_file.values()) for o in list(RANK) + ["equivalent"]}
     viable = tot["caught"] + tot["timeout"] + tot["missed"] + tot["equivalent"]
     score = 100.0 * (tot["caught"] + tot["timeout"]) / viable if viable else 0.0

@@ -25,6 +25,8 @@ pub mod pdo;
 mod ptr;
 pub mod services;
 pub mod srdo;
+#[cfg(test)]
+mod srdo_tests;
 pub mod stack_callbacks;
 pub mod tables;
 pub mod types;

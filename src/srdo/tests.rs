@@ -603,6 +603,29 @@ mod dynamic {
         assert_eq!(srdo.check_config(&od), refused);
         assert!(E6600_1.attach(&FIT_N));
         assert_eq!(srdo.check_config(&od), Ok(()));
+        // A received pair lands in the attached variables (CPU order).
+        let mut srdo = srdo;
+        operational(&od, &mut srdo, 1000);
+        let mut q = ActionQueue::new();
+        let normal = [0x78, 0x56, 0x34, 0x12];
+        srdo.on_frame(NmtState::Operational, &rx(0x101, &normal, 1010), &mut q);
+        let inverted = normal.map(|b| !b);
+        srdo.on_frame(NmtState::Operational, &rx(0x102, &inverted, 1011), &mut q);
+        let ev = run(&mut srdo, &mut q, manual_app);
+        assert_eq!(ev[0], Event::SrdoEvent(0x1301));
+        let value = |v: &[AtomicU8; 4]| {
+            u32::from_ne_bytes(
+                v.each_ref()
+                    .map(|b| b.load(core::sync::atomic::Ordering::Relaxed)),
+            )
+        };
+        assert_eq!(value(&FIT_N), 0x1234_5678);
+        assert_eq!(value(&FIT_I), !0x1234_5678);
+        // SrdoGetMappParam names the attached variables.
+        let p = srdo.mapp_param(&od, 0x1301).unwrap();
+        assert_eq!(p.count, 2);
+        assert!(core::ptr::eq(p.vars[0].unwrap().as_ptr(), FIT_N.as_ptr()));
+        assert!(core::ptr::eq(p.vars[1].unwrap().as_ptr(), FIT_I.as_ptr()));
     }
 
     /// Dummy entries (CiA 301 data type indices 0x0001..0x0007): only sub 0,
