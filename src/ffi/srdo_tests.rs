@@ -120,6 +120,11 @@ struct Node {
 
 impl Node {
     fn new() -> Node {
+        Node::with_callbacks(Callbacks::default())
+    }
+
+    /// [`Node::new`] with the application's callbacks.
+    fn with_callbacks(callbacks: Callbacks) -> Node {
         let serial = srdo_net::lock();
         assert!(global::select(MAX_INSTANCES - 1));
         let _ = global::remove();
@@ -130,7 +135,7 @@ impl Node {
         let instance = Instance {
             stack,
             port: CdrvPort,
-            callbacks: Callbacks::default(),
+            callbacks,
             tables: Default::default(),
         };
         assert_eq!(global::install(instance), Ok(()));
@@ -598,4 +603,77 @@ fn srdo_process_is_a_processing_cycle() {
         SrdoNmtEvent(NmtEvent::EnterOperational as u32),
         CopKernel::SrdoNmtError.code()
     );
+}
+
+// ---- AppSrdoEvent after CcmSendSrdo ------------------------------------------
+
+/// `AppSrdoEvent` calls: the index, and how many callbacks were running
+/// (this one included) when it was called.
+static SRDO_EVENTS: Mutex<Vec<(u16, u32)>> = Mutex::new(Vec::new());
+/// Callbacks running now.
+static DEPTH: AtomicU32 = AtomicU32::new(0);
+/// `AppSrdoEvent` sends SRDO 2 (through `CcmSendSrdo`) when SRDO 1's
+/// event comes, and keeps the code here.
+static NESTED_SEND: AtomicU32 = AtomicU32::new(u32::MAX);
+
+extern "C" fn app_srdo_event(idx: WORD) -> tCopKernel {
+    let depth = DEPTH.fetch_add(1, Ordering::SeqCst) + 1;
+    SRDO_EVENTS.lock().unwrap().push((idx, depth));
+    if idx == 0x1301 && NESTED_SEND.load(Ordering::SeqCst) == u32::MAX - 1 {
+        NESTED_SEND.store(CcmSendSrdo(0x1302), Ordering::SeqCst);
+    }
+    DEPTH.fetch_sub(1, Ordering::SeqCst);
+    0
+}
+
+fn srdo_callbacks() -> Callbacks {
+    Callbacks {
+        srdo: Some(tSrdoAppCallbacks {
+            m_fpSrdoEvent: Some(app_srdo_event),
+            m_fpSrdoError: None,
+            m_fpGfcEvent: None,
+            m_fpProgMonEvent: None,
+        }),
+        ..Callbacks::default()
+    }
+}
+
+// req: M-2.8.1-SEND
+/// Manual 2.8.1: after a successful `CcmSendSrdo` the stack calls
+/// `AppSrdoEvent` with the SRDO's index, once, before `CcmSendSrdo`
+/// returns; a `CcmSendSrdo` made inside that callback sends at once, but
+/// its `AppSrdoEvent` runs after the running callback has returned, never
+/// inside it (callbacks do not nest), also when nothing else is queued
+/// (without the program monitor).
+#[test]
+fn send_calls_app_srdo_event_once_and_never_nested() {
+    let node = Node::with_callbacks(srdo_callbacks());
+    assert_eq!(node.write(0x1302, 1, &[1]), 0);
+    node.seal();
+    node.operational();
+    set_data(0x1234, 0x5678, true);
+    SRDO_EVENTS.lock().unwrap().clear();
+    NESTED_SEND.store(u32::MAX, Ordering::SeqCst);
+    assert_eq!(CcmSendSrdo(0x1301), 0);
+    assert_eq!(*SRDO_EVENTS.lock().unwrap(), vec![(0x1301, 1)]);
+    assert_eq!(sent().len(), 2);
+    SRDO_EVENTS.lock().unwrap().clear();
+    sent();
+    // Inside SRDO 1's event, SRDO 2 is sent.
+    NESTED_SEND.store(u32::MAX - 1, Ordering::SeqCst);
+    TICKS.fetch_add(1000, Ordering::SeqCst);
+    assert_eq!(CcmSendSrdo(0x1301), 0);
+    assert_eq!(
+        NESTED_SEND.load(Ordering::SeqCst),
+        0,
+        "the nested send succeeded"
+    );
+    let ids: Vec<u32> = sent().iter().map(|f| f.0).collect();
+    assert_eq!(ids, vec![0x101, 0x102, 0x103, 0x104]);
+    assert_eq!(
+        *SRDO_EVENTS.lock().unwrap(),
+        vec![(0x1301, 1), (0x1302, 1)],
+        "SRDO 2's event after SRDO 1's callback returned"
+    );
+    drop(node);
 }
