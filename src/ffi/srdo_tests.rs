@@ -638,13 +638,13 @@ fn srdo_callbacks() -> Callbacks {
     }
 }
 
-// req: M-2.8.1-SEND
 /// Manual 2.8.1: after a successful `CcmSendSrdo` the stack calls
 /// `AppSrdoEvent` with the SRDO's index, once, before `CcmSendSrdo`
 /// returns; a `CcmSendSrdo` made inside that callback sends at once, but
 /// its `AppSrdoEvent` runs after the running callback has returned, never
 /// inside it (callbacks do not nest), also when nothing else is queued
 /// (without the program monitor).
+// req: M-2.8.1-SEND
 #[test]
 fn send_calls_app_srdo_event_once_and_never_nested() {
     let node = Node::with_callbacks(srdo_callbacks());
