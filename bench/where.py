@@ -63,7 +63,8 @@ def self_costs(path):
 def part_of(file, function, root):
     # callgrind_annotate prints the repository's files relative to the
     # working directory, or absolute.
-    own = file.startswith(root) or not file.startswith("/")
+    # ("???": no line information, as for C compiled without -g.)
+    own = file != "???" and (file.startswith(root) or not file.startswith("/"))
     key = file.removeprefix(root).lstrip("/") if own else function
     for name, pattern in PARTS:
         if re.search(pattern, key):
@@ -75,7 +76,8 @@ def part_of(file, function, root):
 
 def short(function):
     """A function name without crate path noise and generic arguments."""
-    f = re.sub(r"<[^<>]*>", "", re.sub(r"<[^<>]*>", "", function))
+    f = re.sub(r"^<([^<>]*?) as [^<>]*>", r"\1", function)
+    f = re.sub(r"<[^<>]*>", "", re.sub(r"<[^<>]*>", "", f))
     f = f.replace("cop::", "")
     return f.split(" ")[0]
 
