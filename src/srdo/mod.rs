@@ -633,6 +633,7 @@ impl Srdo {
 
     // ----------------------------------------------------------------- events
 
+    #[cold]
     fn report_error(&mut self, slot: usize, code: CopKernel, q: &mut ActionQueue) {
         let Some(s) = self.slots.get_mut(slot) else {
             return;
@@ -1102,12 +1103,15 @@ impl Srdo {
             s.deadline = now.plus(s.sct);
             s.flags |= flag::ARMED;
         }
-        if first && q.is_empty() {
-            let e = self.report_ok_first(slot, ProgMonEvent::SrdoTransmitted, q);
-            return Ok(e.map(|_| commu_index));
+        let Some(e) = self.mark_ok(slot) else {
+            return Ok(None);
+        };
+        let direct = first && q.is_empty();
+        if !direct {
+            q.emit(e);
         }
-        self.report_ok(slot, ProgMonEvent::SrdoTransmitted, q);
-        Ok(None)
+        Self::progmon(q, ProgMonEvent::SrdoTransmitted);
+        Ok(direct.then_some(commu_index))
     }
 
     /// `CcmSendGfc`: sends the GFC (id 0x001, DLC 0). `kCopSrdoNmtError`
