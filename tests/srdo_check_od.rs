@@ -68,24 +68,6 @@ mod commu_ttype {
     ];
 }
 
-// SRDO 1 disabled (its mapping may be written).
-cop::obd_create_srdo_commu!(mod commu_off, 0x1301, 0, 25, 20, 0x101, 0x102);
-
-/// 0x1381 with 4 entry subindices only (RAM, default count 2).
-mod mapp_short {
-    use super::*;
-    static COUNT: [AtomicU8; 1] = decl::zeroed();
-    static ENTRIES: [[AtomicU8; 4]; 4] = [const { decl::zeroed() }; 4];
-    static DEFAULT: [u8; 4] = 0x6200_0110u32.to_ne_bytes();
-    pub static SUBS: [ObdSubEntry; 5] = [
-        ObdSubEntry::param(0, DataType::UInt8, &COUNT, &[2]),
-        ObdSubEntry::param(1, DataType::UInt32, &ENTRIES[0], &DEFAULT),
-        ObdSubEntry::param(2, DataType::UInt32, &ENTRIES[1], &DEFAULT),
-        ObdSubEntry::param(3, DataType::UInt32, &ENTRIES[2], &DEFAULT),
-        ObdSubEntry::param(4, DataType::UInt32, &ENTRIES[3], &DEFAULT),
-    ];
-}
-
 /// 0x1381 with SRDO_MAX_MAPPENTRIES + 2 entry subindices and that count
 /// as its constant sub 0 (the write hook refuses such a count; a
 /// dictionary default is not written through it).
@@ -127,8 +109,6 @@ const fn generic(commu: &'static [ObdSubEntry], mapp: &'static [ObdSubEntry]) ->
 static GENERIC_TTYPE: [ObdEntry; 5] = generic(&commu_ttype::SUBS, &mapp::SUBS);
 static GENERIC_STRING: [ObdEntry; 5] = generic(&commu::SUBS, &mapp_string::SUBS);
 static GENERIC_LONG: [ObdEntry; 5] = generic(&commu::SUBS, &mapp_long::SUBS);
-static GENERIC_SHORT: [ObdEntry; 5] = generic(&commu_off::SUBS, &mapp_short::SUBS);
-static GENERIC_OFF: [ObdEntry; 5] = generic(&commu_off::SUBS, &mapp::SUBS);
 
 /// The dictionaries share the variables of 0x1300, 0x1301, 0x13FE and
 /// 0x13FF: one test at a time.
@@ -216,30 +196,57 @@ fn a_default_count_above_the_capacity_fails_the_check() {
     assert_eq!(out[n - 5..n], [last as u8, 0x08, 0x01, 0x00, index_high]);
 }
 
-/// `CcmWriteObject` of the mapping count 0x1381 sub 0 on `generic`.
-fn write_count(generic: &'static [ObdEntry], counts: &[(u8, Result<(), CopKernel>)]) {
-    let (_g, mut s, _) = sealed(generic);
-    for &(count, expected) in counts {
-        let r = s
-            .write_object(0x1381, 0, ByteOrder::Wire, &[count], Ticks(0))
-            .map_err(|e| e.kernel);
-        assert_eq!(r, expected, "count {count}");
-    }
-}
-
-// req: SB-2-MAPPING
-// (With 32 or 64 bits of granularity SRDO_MAX_MAPPENTRIES is 4 or 2.)
+// The count-bound test and its dictionaries, only where
+// the mapping is written (dynamic mapping) and SRDO_MAX_MAPPENTRIES exceeds 4
+// (not with 32 or 64 bits of granularity).
 #[cfg(not(any(
     feature = "srdo-static-mapping",
     feature = "srdo-granularity-32",
     feature = "srdo-granularity-64"
 )))]
-#[test]
-fn the_mapping_count_is_bounded_by_the_capacity_and_the_subindices() {
-    let refused = Err(CopKernel::SrdoErrorMapp);
-    // 4 entry subindices, fewer than SRDO_MAX_MAPPENTRIES: 4 at most.
-    write_count(&GENERIC_SHORT, &[(5, refused), (4, Ok(())), (0, Ok(()))]);
-    // SRDO_MAX_MAPPENTRIES subindices: up to the capacity.
-    let max = SRDO_MAX_MAPPENTRIES as u8;
-    write_count(&GENERIC_OFF, &[(max + 1, refused), (max, Ok(()))]);
+mod count_bound {
+    use super::*;
+
+    // SRDO 1 disabled (its mapping may be written).
+    cop::obd_create_srdo_commu!(mod commu_off, 0x1301, 0, 25, 20, 0x101, 0x102);
+
+    /// 0x1381 with 4 entry subindices only (RAM, default count 2).
+    mod mapp_short {
+        use super::*;
+        static COUNT: [AtomicU8; 1] = decl::zeroed();
+        static ENTRIES: [[AtomicU8; 4]; 4] = [const { decl::zeroed() }; 4];
+        static DEFAULT: [u8; 4] = 0x6200_0110u32.to_ne_bytes();
+        pub static SUBS: [ObdSubEntry; 5] = [
+            ObdSubEntry::param(0, DataType::UInt8, &COUNT, &[2]),
+            ObdSubEntry::param(1, DataType::UInt32, &ENTRIES[0], &DEFAULT),
+            ObdSubEntry::param(2, DataType::UInt32, &ENTRIES[1], &DEFAULT),
+            ObdSubEntry::param(3, DataType::UInt32, &ENTRIES[2], &DEFAULT),
+            ObdSubEntry::param(4, DataType::UInt32, &ENTRIES[3], &DEFAULT),
+        ];
+    }
+
+    static GENERIC_SHORT: [ObdEntry; 5] = generic(&commu_off::SUBS, &mapp_short::SUBS);
+    static GENERIC_OFF: [ObdEntry; 5] = generic(&commu_off::SUBS, &mapp::SUBS);
+
+    /// `CcmWriteObject` of the mapping count 0x1381 sub 0 on `generic`.
+    fn write_count(generic: &'static [ObdEntry], counts: &[(u8, Result<(), CopKernel>)]) {
+        let (_g, mut s, _) = sealed(generic);
+        for &(count, expected) in counts {
+            let r = s
+                .write_object(0x1381, 0, ByteOrder::Wire, &[count], Ticks(0))
+                .map_err(|e| e.kernel);
+            assert_eq!(r, expected, "count {count}");
+        }
+    }
+
+    // req: SB-2-MAPPING
+    #[test]
+    fn the_mapping_count_is_bounded_by_the_capacity_and_the_subindices() {
+        let refused = Err(CopKernel::SrdoErrorMapp);
+        // 4 entry subindices, fewer than SRDO_MAX_MAPPENTRIES: 4 at most.
+        write_count(&GENERIC_SHORT, &[(5, refused), (4, Ok(())), (0, Ok(()))]);
+        // SRDO_MAX_MAPPENTRIES subindices: up to the capacity.
+        let max = SRDO_MAX_MAPPENTRIES as u8;
+        write_count(&GENERIC_OFF, &[(max + 1, refused), (max, Ok(()))]);
+    }
 }
