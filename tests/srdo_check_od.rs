@@ -131,10 +131,9 @@ fn sealed(generic: &'static [ObdEntry]) -> (MutexGuard<'static, ()>, Stack, Chec
     while s.drain(&mut port, Ticks(0)).is_some() {}
     s.connect().unwrap();
     while s.drain(&mut port, Ticks(0)).is_some() {}
-    let mut direction = [0u8; 1];
-    s.read_object(0x1301, 1, ByteOrder::Wire, &mut direction)
-        .unwrap();
-    assert_eq!(direction, [1], "the defaults are loaded");
+    let mut sct = [0u8; 2];
+    s.read_object(0x1301, 2, ByteOrder::Wire, &mut sct).unwrap();
+    assert_eq!(sct, 25u16.to_le_bytes(), "the defaults are loaded");
     #[cfg(feature = "srdo-static-mapping")]
     {
         // Refused for the mappings the check refuses too; what counts is
@@ -195,4 +194,59 @@ fn a_default_count_above_the_capacity_fails_the_check() {
     let last = (n - 13) / 5;
     let index_high = if last % 2 == 1 { 0x62 } else { 0x63 };
     assert_eq!(out[n - 5..n], [last as u8, 0x08, 0x01, 0x00, index_high]);
+}
+
+// The count-bound test and its dictionaries, only where
+// the mapping is written (dynamic mapping) and SRDO_MAX_MAPPENTRIES exceeds 4
+// (not with 32 or 64 bits of granularity).
+#[cfg(not(any(
+    feature = "srdo-static-mapping",
+    feature = "srdo-granularity-32",
+    feature = "srdo-granularity-64"
+)))]
+mod count_bound {
+    use super::*;
+
+    // SRDO 1 disabled (its mapping may be written).
+    cop::obd_create_srdo_commu!(mod commu_off, 0x1301, 0, 25, 20, 0x101, 0x102);
+
+    /// 0x1381 with 4 entry subindices only (RAM, default count 2).
+    mod mapp_short {
+        use super::*;
+        static COUNT: [AtomicU8; 1] = decl::zeroed();
+        static ENTRIES: [[AtomicU8; 4]; 4] = [const { decl::zeroed() }; 4];
+        static DEFAULT: [u8; 4] = 0x6200_0110u32.to_ne_bytes();
+        pub static SUBS: [ObdSubEntry; 5] = [
+            ObdSubEntry::param(0, DataType::UInt8, &COUNT, &[2]),
+            ObdSubEntry::param(1, DataType::UInt32, &ENTRIES[0], &DEFAULT),
+            ObdSubEntry::param(2, DataType::UInt32, &ENTRIES[1], &DEFAULT),
+            ObdSubEntry::param(3, DataType::UInt32, &ENTRIES[2], &DEFAULT),
+            ObdSubEntry::param(4, DataType::UInt32, &ENTRIES[3], &DEFAULT),
+        ];
+    }
+
+    static GENERIC_SHORT: [ObdEntry; 5] = generic(&commu_off::SUBS, &mapp_short::SUBS);
+    static GENERIC_OFF: [ObdEntry; 5] = generic(&commu_off::SUBS, &mapp::SUBS);
+
+    /// `CcmWriteObject` of the mapping count 0x1381 sub 0 on `generic`.
+    fn write_count(generic: &'static [ObdEntry], counts: &[(u8, Result<(), CopKernel>)]) {
+        let (_g, mut s, _) = sealed(generic);
+        for &(count, expected) in counts {
+            let r = s
+                .write_object(0x1381, 0, ByteOrder::Wire, &[count], Ticks(0))
+                .map_err(|e| e.kernel);
+            assert_eq!(r, expected, "count {count}");
+        }
+    }
+
+    // req: SB-2-MAPPING
+    #[test]
+    fn the_mapping_count_is_bounded_by_the_capacity_and_the_subindices() {
+        let refused = Err(CopKernel::SrdoErrorMapp);
+        // 4 entry subindices, fewer than SRDO_MAX_MAPPENTRIES: 4 at most.
+        write_count(&GENERIC_SHORT, &[(5, refused), (4, Ok(())), (0, Ok(()))]);
+        // SRDO_MAX_MAPPENTRIES subindices: up to the capacity.
+        let max = SRDO_MAX_MAPPENTRIES as u8;
+        write_count(&GENERIC_OFF, &[(max + 1, refused), (max, Ok(()))]);
+    }
 }

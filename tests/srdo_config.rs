@@ -114,6 +114,14 @@ fn refused_writes_change_nothing() {
         refused(CopKernel::SrdoCfgIdError, 0x0609_0030),
         "above 0x180"
     );
+    // CiA 304: COB-ID 2 is even, 0x102..=0x180 (0x100 is even, below).
+    assert_eq!(
+        net.p.write(0x1301, 6, 0x100, 4),
+        refused(CopKernel::SrdoCfgIdError, 0x0609_0030),
+        "below 0x102"
+    );
+    net.p.write(0x1301, 6, 0x180, 4).unwrap();
+    net.p.write(0x1301, 5, 0x17F, 4).unwrap();
     net.p.write(0x1301, 5, 0x103, 4).unwrap();
     net.p.write(0x1301, 6, 0x104, 4).unwrap();
     assert_eq!(net.p.read(0x1301, 5), 0x103);

@@ -44,10 +44,10 @@ extern "C" fn CdrvDeleteInstance() -> tCopKernel {
 }
 #[unsafe(no_mangle)]
 extern "C" fn CdrvWriteMsg(p: *mut tCdrvMsg) -> tCopKernel {
-    if REFUSE
-        .fetch_update(Ordering::SeqCst, Ordering::SeqCst, |n| n.checked_sub(1))
-        .is_ok()
-    {
+    // (The tests run one at a time, under the SRDO network's lock.)
+    let refuse = REFUSE.load(Ordering::SeqCst);
+    if refuse > 0 {
+        REFUSE.store(refuse - 1, Ordering::SeqCst);
         return CopKernel::CdrvTxBuffHighOverrun.code();
     }
     // SAFETY: the library passes a valid message for the call's duration.
@@ -71,14 +71,16 @@ extern "C" fn CdrvReadMsg(pp: *mut *mut tCdrvMsg) -> tCopKernel {
         ..tCdrvMsg::default()
     };
     m.m_bData[..data.len()].copy_from_slice(&data);
-    // One buffer entry per frame, valid until the end of the test program
-    // (a few frames).
+    // One buffer entry per frame, freed by CdrvReleaseMsg.
     // SAFETY: the library passes a valid pointer for the entry's address.
-    unsafe { *pp = Box::leak(Box::new(m)) };
+    unsafe { *pp = Box::into_raw(Box::new(m)) };
     CopKernel::CdrvMsgHigh.code()
 }
 #[unsafe(no_mangle)]
-extern "C" fn CdrvReleaseMsg(_p: *mut tCdrvMsg) -> tCopKernel {
+extern "C" fn CdrvReleaseMsg(p: *mut tCdrvMsg) -> tCopKernel {
+    // SAFETY: `p` is an entry CdrvReadMsg handed out (Box::into_raw),
+    // released once.
+    drop(unsafe { Box::from_raw(p) });
     0
 }
 #[unsafe(no_mangle)]
@@ -292,11 +294,14 @@ fn calls_without_an_instance_are_refused() {
 
 /// A `tSrdoInitParam` with the granularity `g` (the table is not read).
 fn init_param(g: u8) -> tSrdoInitParam {
-    // SAFETY: tSrdoInitParam is a C structure of integers and pointers, for
-    // which all zero bytes are a valid value (NULL pointers).
-    let mut p: tSrdoInitParam = unsafe { core::mem::zeroed() };
-    p.m_bGranularity = g;
-    p
+    tSrdoInitParam {
+        m_SrdoTabParam: tSrdoTabParam {
+            m_pSrdoTable: core::ptr::null_mut(),
+            m_SrdoCount: 0,
+        },
+        m_bGranularity: g,
+        m_pbSrdoConfigValid: core::ptr::null_mut(),
+    }
 }
 
 // req: M-2.4-GRANULARITY
