@@ -106,10 +106,15 @@ def stack_sizes(data, end, sections):
 
 
 def address_words(data, end, sections):
-    """Every aligned 32-bit word of the loaded sections (code and data)."""
+    """Every aligned 32-bit word of the loaded data sections. Code sections
+    are left out: an instruction's encoding can equal a function's address
+    by chance (on a big-endian BE-8 image the little-endian instruction
+    `bic r0, sl, r0` reads as 0x0000cae1); the literal pools in them come
+    from the disassembly's `.word` lines instead (see `disassemble`)."""
     words = set()
     for name, (addr, off, size, flags, typ) in sections.items():
-        if not flags & 0x2 or typ == 8:  # SHF_ALLOC, not NOBITS
+        # SHF_ALLOC, not SHF_EXECINSTR, not NOBITS
+        if not flags & 0x2 or flags & 0x4 or typ == 8:
             continue
         for pos in range(off, off + size - 3, 4):
             words.add(struct.unpack_from(end + "I", data, pos)[0] & ~1)
@@ -161,7 +166,10 @@ def disassemble(elf, objdump):
     out = subprocess.run([objdump, "-d", "--no-show-raw-insn", elf], check=True,
                          stdout=subprocess.PIPE, universal_newlines=True).stdout
     funcs = {}  # name -> dict(addr, calls, tails, indirect, asm_frame)
-    consts = set()  # addresses built with movw/movt (ARMv7 code has no literal for them)
+    # Addresses built with movw/movt, and the literal-pool words of the code
+    # (objdump prints them as `.word`, telling data from code by the ELF's
+    # mapping symbols).
+    consts = set()
     low = {}
     cur, cur_name = None, None
     for line in out.splitlines():
@@ -173,6 +181,9 @@ def disassemble(elf, objdump):
             funcs[m.group(2)] = cur
             continue
         m = INSN_RE.match(line)
+        if m and m.group(2) == ".word":
+            consts.add(int(m.group(3).split()[0], 16) & ~1)
+            continue
         if not m or cur is None:
             continue
         op, args = m.group(2), m.group(3)
