@@ -977,9 +977,9 @@ impl Stack {
             .map(|_| ())
     }
 
-    /// [`Stack::send_srdo`] that returns the SRDO's success event
-    /// (`Some(commu_index)` for `Event::SrdoEvent(commu_index)`) instead
-    /// of queueing it when nothing else is queued (see
+    /// [`Stack::send_srdo`] that, with `first`, returns the SRDO's success
+    /// event (`Some(commu_index)` for `Event::SrdoEvent(commu_index)`)
+    /// instead of queueing it when nothing else is queued (see
     /// [`crate::srdo::Srdo::send`]): the caller hands it to the
     /// application, then takes whatever [`Stack::has_queued`] says is left.
     pub fn send_srdo_first(
@@ -987,9 +987,10 @@ impl Stack {
         port: &mut impl CanPort,
         commu_index: u16,
         now: Ticks,
+        first: bool,
     ) -> CopResult<Option<u16>> {
         self.srdo
-            .send(port, self.state, commu_index, now, &mut self.queue, true)
+            .send(port, self.state, commu_index, now, &mut self.queue, first)
     }
 
     /// True when events or internal work are queued (what [`Stack::drain`]

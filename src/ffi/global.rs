@@ -325,12 +325,11 @@ pub fn with_srdo_event<R>(
     f: impl FnOnce(&mut Instance, bool) -> (R, Option<u16>),
 ) -> Result<R, CopKernel> {
     let direct = !GLOBAL.pumping.get();
-    let (r, first, queued) = with(|i| {
+    let (r, first, mut queued) = with(|i| {
         let (r, idx) = f(i, direct);
         let cb = i.callbacks.srdo.and_then(|c| c.m_fpSrdoEvent);
         (r, idx.map(|idx| (cb, idx)), i.stack.has_queued())
     })?;
-    let mut queued = queued;
     if let Some((cb, idx)) = first {
         GLOBAL.pumping.set(true);
         // An SRDO event never reports an error (`Pending::call`).

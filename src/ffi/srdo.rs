@@ -64,13 +64,9 @@ fn send_one(idx: WORD) -> tCopKernel {
     let now = TgtClock.now();
     let r = global::with_srdo_event(|i, direct| {
         let Instance { stack, port, .. } = i;
-        if direct {
-            match stack.send_srdo_first(port, idx, now) {
-                Ok(e) => (Ok(()), e),
-                Err(e) => (Err(e), None),
-            }
-        } else {
-            (stack.send_srdo(port, idx, now), None)
+        match stack.send_srdo_first(port, idx, now, direct) {
+            Ok(e) => (Ok(()), e),
+            Err(e) => (Err(e), None),
         }
     });
     code(r)

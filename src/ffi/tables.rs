@@ -47,6 +47,8 @@ impl AppTables {
         }
     }
 
+    /// [`AppTables::sync`] with a table defined (out of line: the cycle
+    /// without tables stays small).
     #[inline(never)]
     fn compare(&self, stack: &mut Stack, port: &mut CdrvPort) {
         let t = *self;

@@ -122,7 +122,7 @@ impl Watch {
     /// taken): then sample, and [`Watch::take`] the result.
     #[inline]
     pub(crate) fn unchanged(&self) -> Option<Payload> {
-        (self.state == State::Taken && self.same_bytes()).then_some(self.payload)
+        self.same_bytes().then_some(self.payload)
     }
 
     /// The watched bytes are those taken last (false when nothing was

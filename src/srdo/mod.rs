@@ -648,27 +648,24 @@ impl Srdo {
         q.schedule(Internal::SrdoCheckHandled(slot as u8));
     }
 
+    /// Reports a successful transfer: status ok, the success event, then
+    /// the program monitor's event. With `direct` (only with an empty
+    /// queue) the success event is returned instead of queued, as what the
+    /// queue would hand out first; else it is queued and `None` returned.
     #[inline(always)]
-    fn report_ok(&mut self, slot: usize, pm: ProgMonEvent, q: &mut ActionQueue) {
-        if let Some(e) = self.mark_ok(slot) {
-            q.emit(e);
-            Self::progmon(q, pm);
-        }
-    }
-
-    /// [`Srdo::report_ok`] with an empty queue: returns the success event
-    /// (what the queue would hand out first) and queues the program
-    /// monitor's event after it.
-    #[inline(always)]
-    fn report_ok_first(
+    fn report_ok(
         &mut self,
         slot: usize,
         pm: ProgMonEvent,
         q: &mut ActionQueue,
+        direct: bool,
     ) -> Option<Event> {
         let e = self.mark_ok(slot)?;
+        if !direct {
+            q.emit(e);
+        }
         Self::progmon(q, pm);
-        Some(e)
+        direct.then_some(e)
     }
 
     /// Status bits 4-5 := 00 (success); the event to report.
@@ -878,11 +875,7 @@ impl Srdo {
                     self.due = s.deadline;
                 }
             }
-            if FIRST {
-                return self.report_ok_first(slot, ProgMonEvent::SrdoReceived, q);
-            }
-            self.report_ok(slot, ProgMonEvent::SrdoReceived, q);
-            return None;
+            return self.report_ok(slot, ProgMonEvent::SrdoReceived, q, FIRST);
         };
         self.report_error(slot, code, q);
         None
@@ -1103,15 +1096,9 @@ impl Srdo {
             s.deadline = now.plus(s.sct);
             s.flags |= flag::ARMED;
         }
-        let Some(e) = self.mark_ok(slot) else {
-            return Ok(None);
-        };
         let direct = first && q.is_empty();
-        if !direct {
-            q.emit(e);
-        }
-        Self::progmon(q, ProgMonEvent::SrdoTransmitted);
-        Ok(direct.then_some(commu_index))
+        let e = self.report_ok(slot, ProgMonEvent::SrdoTransmitted, q, direct);
+        Ok(e.map(|_| commu_index))
     }
 
     /// `CcmSendGfc`: sends the GFC (id 0x001, DLC 0). `kCopSrdoNmtError`
