@@ -62,11 +62,13 @@ BIN_PM=$(host_build progmon)
 BIN_NOPM=$(host_build no-progmon --no-default-features)
 
 # Ir inside `measure_<fn>` for one run: ir <binary> <fn> <args...>
-# (bench/capi binaries: C functions without the crate prefix).
+# (bench/capi binaries: C functions without the crate prefix; their
+# profiles stay in $WORK for `where` below).
+rm -f "$WORK"/profile-*.out
 ir() {
     local bin=$1 fn=$2 out sym
     shift 2
-    out=$WORK/callgrind.$$.out
+    out=$WORK/profile-$(basename "$bin")-$(IFS=-; echo "$*").out
     sym="cop_bench::measure_$fn"
     case "$bin" in */capi-*) sym="measure_$fn" ;; esac
     rm -f "$out"
@@ -75,7 +77,7 @@ ir() {
         { cat "$WORK/valgrind.log" >&2; die "cop-bench $*"; }
     awk '/^summary:/ {print $2; found=1} END {if (!found) exit 1}' "$out" ||
         die "no callgrind summary for cop-bench $*"
-    rm -f "$out"
+    case "$bin" in */capi-*) ;; *) rm -f "$out" ;; esac
 }
 
 # Instructions per call: per_call <binary> <fn> <N> <scenario args...>
@@ -165,11 +167,9 @@ CSEND=$(per_call "$WORK/capi-off-8" send $CYCLES send)
 # Where the instructions of a C API figure go: where <binary> <fn> <scenario>
 # [<base scenario>] prints bench/where.py's table (self cost per part of the
 # library, from the same N / 2N runs as per_call).
-profile() { # <binary> <fn> <scenario> <N> -> profile file
-    local out=$WORK/where-$(basename "$1")-$3-$4.out
-    valgrind --tool=callgrind --callgrind-out-file="$out" --collect-atstart=no \
-        --toggle-collect="measure_$2" "$1" "$3" "$4" >/dev/null 2>"$WORK/valgrind.log" ||
-        { cat "$WORK/valgrind.log" >&2; die "where: $1 $3"; }
+profile() { # <binary> <fn> <scenario> <N> -> the profile file of that run
+    local out=$WORK/profile-$(basename "$1")-$3-$4.out
+    [ -f "$out" ] || ir "$@" >/dev/null
     echo "$out"
 }
 where() {
