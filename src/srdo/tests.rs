@@ -1007,6 +1007,66 @@ mod dynamic {
         }
     }
 
+    /// SAFETY_BEHAVIOUR.md section 5: SCT timeout "once per expiry, re-armed
+    /// by the next valid pair"; a cycle with nothing due does no timer pass
+    /// (ARCHITECTURE.md, "A cycle with nothing due"). The expiry here is
+    /// found at the last SRDO of the pass, so the pass that reports it is
+    /// also the one that plans the next deadline.
+    // req: M-1.1-SCT
+    #[test]
+    fn sct_timeout_of_the_last_srdo_plans_the_next_deadline() {
+        let (_g, od, mut srdo) = setup();
+        // SRDO 1: receive, SCT 100 ms; SRDO 4 (the last): receive, SCT 25 ms.
+        set(&od, 0x1301, 1, 2);
+        set(&od, 0x1301, 2, 100);
+        set(&od, 0x1381, 0, 2);
+        set(&od, 0x1381, 1, 0x6201_0110);
+        set(&od, 0x1381, 2, 0x6301_0110);
+        set(&od, 0x1304, 1, 2);
+        set(&od, 0x1384, 0, 2);
+        set(&od, 0x1384, 1, 0x6201_0210);
+        set(&od, 0x1384, 2, 0x6301_0210);
+        seal(&od, &srdo);
+        operational(&od, &mut srdo, 0);
+        assert_eq!(srdo.count(), 4);
+        let sct = CopKernel::SrdoSctTimeout;
+        let errors = |ev: &[Event]| {
+            ev.iter()
+                .filter_map(|e| match *e {
+                    Event::SrdoError(idx, code) => Some((idx, code)),
+                    _ => None,
+                })
+                .collect::<Vec<_>>()
+        };
+        // Deadlines: SRDO 4 at 250 ticks (25 ms), SRDO 1 at 1000 (100 ms).
+        assert_eq!(errors(&timers(&mut srdo, 250, false)), []);
+        srdo.begin_cycle();
+        assert!(
+            !srdo.at_rest(NmtState::Operational, Ticks(251)),
+            "the SCT of SRDO 4 has passed"
+        );
+        assert_eq!(
+            errors(&timers(&mut srdo, 251, false)),
+            [(0x1304, sct)],
+            "reported by the pass that ends with SRDO 4"
+        );
+        // Once per expiry: the next deadline is that of SRDO 1, so without
+        // the program monitor the cycles until then are at rest.
+        srdo.begin_cycle();
+        for t in [252, 600, 1000] {
+            assert_eq!(
+                srdo.at_rest(NmtState::Operational, Ticks(t)),
+                !SRDO_USE_PROGMONITOR,
+                "tick {t}"
+            );
+        }
+        assert_eq!(errors(&timers(&mut srdo, 1000, false)), []);
+        srdo.begin_cycle();
+        assert!(!srdo.at_rest(NmtState::Operational, Ticks(1001)));
+        assert_eq!(errors(&timers(&mut srdo, 1001, false)), [(0x1301, sct)]);
+        assert_eq!(errors(&timers(&mut srdo, 5000, false)), []);
+    }
+
     // req: SB-5-SRVT-SWITCH
     #[test]
     fn srvt_checked_before_second_frame_both_settings() {
@@ -1097,6 +1157,56 @@ mod static_mapping {
             srdo.static_define_var_fields(&od, 0x1301, &NORMAL[0..1], &NORMAL[1..2]),
             Err(CopKernel::SrdoNmtError)
         );
+    }
+
+    // SRDO 1 maps one UNSIGNED8 pair (0x6200 sub 1 / 0x6300 sub 1) and a
+    // pair of UNSIGNED8 dummy entries (CiA 301 data type entry 0x0005).
+    crate::obd_create_srdo_commu!(mod dc1, 0x1301, 0, 25, 20, 0x101, 0x102);
+    crate::obd_create_srdo_mapp!(
+        mod dm1,
+        0x1381,
+        [0x6200_0108, 0x6300_0108, 0x0005_0008, 0x0005_0008]
+    );
+    crate::obd_create_srdo_cfg_valid!(mod d_cfg_valid);
+    crate::obd_create_srdo_crc!(mod d_crcs, [0]);
+    static WITH_DUMMIES: [ObdEntry; 4] = crate::srdo_obd_entries![dc1, dm1, d_cfg_valid, d_crcs];
+
+    /// SAFETY_BEHAVIOUR.md section 10 (the fields are the buffers the
+    /// mapping points to) and section 11 / manual 2.4 (dummy entries only
+    /// with SRDO_USE_DUMMY_MAPPING): a dummy entry has no variable, so it
+    /// takes its bytes of the fields without naming a buffer; whether the
+    /// SRDO may run with it is the configuration check's decision.
+    // req: M-2.12.1-STATIC-FIELDS, M-2.4-DUMMY
+    #[test]
+    fn dummy_entries_take_field_bytes_without_a_variable() {
+        let _g = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+        let od = ObjectDictionary::new(&WITH_DUMMIES, &[], &DEVICE).unwrap();
+        od.restore_defaults(0x1000, 0x9FFF);
+        let mut srdo = Srdo::new();
+        srdo.init(&od).unwrap();
+        assert_eq!(srdo.mapped_len(&od, 0x1301), Ok(2));
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1301, &NORMAL[0..1], &INVERTED[0..1]),
+            Err(CopKernel::SrdoErrorMapp),
+            "the fields must hold the dummy bytes too"
+        );
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1301, &NORMAL[1..3], &INVERTED[0..2]),
+            Err(CopKernel::SrdoErrorMapp),
+            "the normal variable is not at the start of the field"
+        );
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1301, &NORMAL[0..2], &INVERTED[0..2]),
+            Ok(())
+        );
+        set(&od, 0x1301, 1, 2);
+        seal(&od, &srdo);
+        let expected = if crate::config::SRDO_USE_DUMMY_MAPPING {
+            Ok(())
+        } else {
+            Err((CopKernel::SrdoErrorMapp, 0x1301))
+        };
+        assert_eq!(srdo.check_config_with(&od, 8), expected);
     }
 
     // req: M-2.12.1-STATIC-FIELDS
@@ -1255,6 +1365,44 @@ mod sixty_four {
         assert_eq!(timeouts, (0x1301..=0x133F).collect::<Vec<u16>>());
         assert!(steps >= 63);
     }
+}
+
+/// SAFETY_BEHAVIOUR.md section 6: an id 0x001 with DLC 0 while 0x1300 == 1
+/// calls `AppGfcEvent`, anything else is ignored and counted; in STOPPED
+/// (CiA 301 7.3.2.2: only NMT and error control) and before
+/// `CcmConnectToNet` not even a valid GFC is reported. The stack drops such
+/// frames before the module (tests/srdo_nmt_gfc.rs); the module keeps the
+/// rule on its own.
+// req: M-1.3-GFC
+#[test]
+fn gfc_is_reported_only_pre_operational_and_operational() {
+    let (_g, od, mut srdo) = setup();
+    set(&od, GFC_PARAM_INDEX, 0, 1);
+    srdo.init(&od).unwrap();
+    let gfc = crate::config::SRDO_USE_GFC;
+    let cases: [(NmtState, &[u8], bool); 5] = [
+        (NmtState::Stopped, &[], false),
+        (NmtState::Initialisation, &[], false),
+        (NmtState::PreOperational, &[], true),
+        (NmtState::Operational, &[], true),
+        (NmtState::Operational, &[0], false),
+    ];
+    for (state, data, reported) in cases {
+        let mut q = ActionQueue::new();
+        let taken = srdo.on_frame(state, &rx(0x001, data, 0), &mut q);
+        assert_eq!(
+            taken, gfc,
+            "{state:?}: a GFC frame exactly when GFC is built in"
+        );
+        let ev = run(&mut srdo, &mut q, |_, _| None);
+        let expected = if gfc && reported {
+            vec![Event::Gfc]
+        } else {
+            vec![]
+        };
+        assert_eq!(ev, expected, "{state:?}, DLC {}", data.len());
+    }
+    assert_eq!(srdo.gfc_ignored(), if gfc { 3 } else { 0 });
 }
 
 #[test]
