@@ -153,8 +153,15 @@ static NO_CFG_VALID: [ObdEntry; 2] = crate::srdo_obd_entries![g1, gm1];
 static SERIAL: std::sync::Mutex<()> = std::sync::Mutex::new(());
 
 fn setup() -> (std::sync::MutexGuard<'static, ()>, ObjectDictionary, Srdo) {
+    setup_with(&GENERIC)
+}
+
+/// [`setup`] with the SRDO objects `generic` (and the device objects).
+fn setup_with(
+    generic: &'static [ObdEntry],
+) -> (std::sync::MutexGuard<'static, ()>, ObjectDictionary, Srdo) {
     let guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
-    let od = ObjectDictionary::new(&GENERIC, &[], &DEVICE).unwrap();
+    let od = ObjectDictionary::new(generic, &[], &DEVICE).unwrap();
     od.restore_defaults(0x1000, 0x9FFF);
     let mut srdo = Srdo::new();
     srdo.init(&od).unwrap();
@@ -939,6 +946,18 @@ mod dynamic {
         assert_eq!(get(&od, 0x6301, 1), 0xFFFC);
     }
 
+    /// SRDO `commu_index`: receive, SCT `sct_ms`, normal 0x6201 sub `sub`
+    /// (U16), inverted 0x6301 sub `sub` (U16); DLC 2.
+    fn receive_u16_pair(od: &ObjectDictionary, commu_index: u16, sct_ms: u64, sub: u8) {
+        let mapp_index = commu_index + MAPP_OFFSET;
+        let entry = |index: u32| u64::from(index << 16 | u32::from(sub) << 8 | 16);
+        set(od, commu_index, 1, 2);
+        set(od, commu_index, 2, sct_ms);
+        set(od, mapp_index, 0, 2);
+        set(od, mapp_index, 1, entry(0x6201));
+        set(od, mapp_index, 2, entry(0x6301));
+    }
+
     /// Runs the timer phase of one cycle with the SRVT switch given.
     fn timers(srdo: &mut Srdo, now: u32, srvt_before_1st: bool) -> Vec<Event> {
         srdo.begin_cycle();
@@ -960,11 +979,7 @@ mod dynamic {
         for switch in [false, true] {
             let (_g, od, mut srdo) = setup();
             // SRDO 2: receive, SCT 100 ms, COB-IDs 0x103/0x104, 2 bytes.
-            set(&od, 0x1302, 1, 2);
-            set(&od, 0x1302, 2, 100);
-            set(&od, 0x1382, 0, 2);
-            set(&od, 0x1382, 1, 0x6201_0210);
-            set(&od, 0x1382, 2, 0x6301_0210);
+            receive_u16_pair(&od, 0x1302, 100, 2);
             receive_config(&od, &srdo);
             operational(&od, &mut srdo, 1000);
             // Deadlines: SRDO 1 at 1250 (25 ms), SRDO 2 at 2000; the pair of
@@ -1017,15 +1032,8 @@ mod dynamic {
     fn sct_timeout_of_the_last_srdo_plans_the_next_deadline() {
         let (_g, od, mut srdo) = setup();
         // SRDO 1: receive, SCT 100 ms; SRDO 4 (the last): receive, SCT 25 ms.
-        set(&od, 0x1301, 1, 2);
-        set(&od, 0x1301, 2, 100);
-        set(&od, 0x1381, 0, 2);
-        set(&od, 0x1381, 1, 0x6201_0110);
-        set(&od, 0x1381, 2, 0x6301_0110);
-        set(&od, 0x1304, 1, 2);
-        set(&od, 0x1384, 0, 2);
-        set(&od, 0x1384, 1, 0x6201_0210);
-        set(&od, 0x1384, 2, 0x6301_0210);
+        receive_u16_pair(&od, 0x1301, 100, 1);
+        receive_u16_pair(&od, 0x1304, 25, 2);
         seal(&od, &srdo);
         operational(&od, &mut srdo, 0);
         assert_eq!(srdo.count(), 4);
@@ -1179,26 +1187,33 @@ mod static_mapping {
     // req: M-2.12.1-STATIC-FIELDS, M-2.4-DUMMY
     #[test]
     fn dummy_entries_take_field_bytes_without_a_variable() {
-        let _g = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
-        let od = ObjectDictionary::new(&WITH_DUMMIES, &[], &DEVICE).unwrap();
-        od.restore_defaults(0x1000, 0x9FFF);
-        let mut srdo = Srdo::new();
-        srdo.init(&od).unwrap();
+        let (_g, od, mut srdo) = setup_with(&WITH_DUMMIES);
         assert_eq!(srdo.mapped_len(&od, 0x1301), Ok(2));
-        assert_eq!(
-            srdo.static_define_var_fields(&od, 0x1301, &NORMAL[0..1], &INVERTED[0..1]),
-            Err(CopKernel::SrdoErrorMapp),
-            "the fields must hold the dummy bytes too"
-        );
-        assert_eq!(
-            srdo.static_define_var_fields(&od, 0x1301, &NORMAL[1..3], &INVERTED[0..2]),
-            Err(CopKernel::SrdoErrorMapp),
-            "the normal variable is not at the start of the field"
-        );
-        assert_eq!(
-            srdo.static_define_var_fields(&od, 0x1301, &NORMAL[0..2], &INVERTED[0..2]),
-            Ok(())
-        );
+        let bad = Err(CopKernel::SrdoErrorMapp);
+        let fields: [(&'static [AtomicU8], &'static [AtomicU8], CopResult, &str); 3] = [
+            (
+                &NORMAL[0..1],
+                &INVERTED[0..1],
+                bad,
+                "too short for the dummy bytes",
+            ),
+            (
+                &NORMAL[1..3],
+                &INVERTED[0..2],
+                bad,
+                "normal variable not at the start",
+            ),
+            (
+                &NORMAL[0..2],
+                &INVERTED[0..2],
+                Ok(()),
+                "variables at the start",
+            ),
+        ];
+        for (normal, inverted, expected, why) in fields {
+            let r = srdo.static_define_var_fields(&od, 0x1301, normal, inverted);
+            assert_eq!(r, expected, "{why}");
+        }
         set(&od, 0x1301, 1, 2);
         seal(&od, &srdo);
         let expected = if crate::config::SRDO_USE_DUMMY_MAPPING {
@@ -1307,11 +1322,7 @@ mod sixty_four {
     // req: M-1.5-SIXTYFOUR
     #[test]
     fn sixty_four_receive_srdos() {
-        let _g = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
-        let od = ObjectDictionary::new(&GENERIC64, &[], &DEVICE).unwrap();
-        od.restore_defaults(0x1000, 0x9FFF);
-        let mut srdo = Srdo::new();
-        srdo.init(&od).unwrap();
+        let (_g, od, mut srdo) = setup_with(&GENERIC64);
         assert_eq!(srdo.count(), 64);
         seal(&od, &srdo);
         assert_eq!(srdo.check_config(&od), Ok(()));
