@@ -589,6 +589,17 @@ mod dynamic {
         );
     }
 
+    /// SRDO 1's frames at tick `t`: `normal` on 0x101, its complement on
+    /// 0x102 one tick later; the events, the application being
+    /// [`manual_app`].
+    fn receive_pair(srdo: &mut Srdo, normal: &[u8], t: u32) -> Vec<Event> {
+        let mut q = ActionQueue::new();
+        let inverted: Vec<u8> = normal.iter().map(|b| !b).collect();
+        srdo.on_frame(NmtState::Operational, &rx(0x101, normal, t), &mut q);
+        srdo.on_frame(NmtState::Operational, &rx(0x102, &inverted, t + 1), &mut q);
+        run(srdo, &mut q, manual_app)
+    }
+
     /// An attached variable must exist and be 1, 2, 4 or 8 bytes wide and
     /// at least as wide as the object's type (check.rs step 5).
     // req: SB-2-MAPPING
@@ -613,12 +624,7 @@ mod dynamic {
         // A received pair lands in the attached variables (CPU order).
         let mut srdo = srdo;
         operational(&od, &mut srdo, 1000);
-        let mut q = ActionQueue::new();
-        let normal = [0x78, 0x56, 0x34, 0x12];
-        srdo.on_frame(NmtState::Operational, &rx(0x101, &normal, 1010), &mut q);
-        let inverted = normal.map(|b| !b);
-        srdo.on_frame(NmtState::Operational, &rx(0x102, &inverted, 1011), &mut q);
-        let ev = run(&mut srdo, &mut q, manual_app);
+        let ev = receive_pair(&mut srdo, &[0x78, 0x56, 0x34, 0x12], 1010);
         assert_eq!(ev[0], Event::SrdoEvent(0x1301));
         let value = |v: &[AtomicU8; 4]| {
             u32::from_ne_bytes(
@@ -633,6 +639,87 @@ mod dynamic {
         assert_eq!(p.count, 2);
         assert!(core::ptr::eq(p.vars[0].unwrap().as_ptr(), FIT_N.as_ptr()));
         assert!(core::ptr::eq(p.vars[1].unwrap().as_ptr(), FIT_I.as_ptr()));
+    }
+
+    /// The application takes an attached variable away while OPERATIONAL
+    /// (`CcmDefineVarTab` with `m_pData` NULL, which src/ffi/ccm.rs stores
+    /// as given). SAFETY_BEHAVIOUR.md section 5: on every error the mapped
+    /// variables are not changed, the status shows the error and
+    /// `AppSrdoError` is called; the code is kCopSrdoErrorMapp (manual
+    /// 2.9.2, the mapping). A transmit SRDO from such a variable sends
+    /// nothing.
+    // req: SB-5-NO-WRITE-ON-ERROR, M-2.8.1-SEND
+    #[test]
+    fn a_variable_detached_while_operational_is_a_mapping_error() {
+        use core::sync::atomic::Ordering::Relaxed;
+        let detach = || {
+            for e in [&E6600_1, &E6600_2] {
+                e.m_pData.store(core::ptr::null_mut(), Relaxed);
+            }
+        };
+        let (_g, od, mut srdo) = setup_receiving();
+        // SRDO 1 receives into the attached variables, SRDO 2 sends them.
+        set(&od, 0x1381, 1, 0x6600_0120);
+        set(&od, 0x1381, 2, 0x6600_0220);
+        set(&od, 0x1302, 1, 1);
+        set(&od, 0x1382, 0, 2);
+        set(&od, 0x1382, 1, 0x6600_0120);
+        set(&od, 0x1382, 2, 0x6600_0220);
+        seal(&od, &srdo);
+        assert!(E6600_1.attach(&FIT_N) && E6600_2.attach(&FIT_I));
+        for (b, v) in FIT_N.iter().zip([0x11, 0x22, 0x33, 0x44]) {
+            b.store(v, Relaxed);
+        }
+        let fit_n = || FIT_N.each_ref().map(|b| b.load(Relaxed));
+        operational(&od, &mut srdo, 1000);
+        E6600_2.m_pData.store(core::ptr::null_mut(), Relaxed);
+        let normal = [0x78, 0x56, 0x34, 0x12];
+        let inverted = normal.map(|b| !b);
+        let ev = receive_pair(&mut srdo, &normal, 1010);
+        assert_eq!(ev[0], Event::SrdoError(0x1301, CopKernel::SrdoErrorMapp));
+        assert_eq!(fit_n(), [0x11, 0x22, 0x33, 0x44], "nothing written");
+        assert!(!ev.contains(&Event::SrdoEvent(0x1301)));
+        // Transmission gathers nothing from the missing variable.
+        let mut q = ActionQueue::new();
+        let mut port = crate::port::Recorder::default();
+        let r = srdo.send(
+            &mut port,
+            NmtState::Operational,
+            0x1302,
+            Ticks(1100),
+            &mut q,
+            false,
+        );
+        assert_eq!(r, Err(CopKernel::SrdoErrorMapp));
+        assert!(port.0.is_empty(), "no frame sent");
+        let ev = run(&mut srdo, &mut q, manual_app);
+        assert_eq!(ev[0], Event::SrdoError(0x1302, CopKernel::SrdoErrorMapp));
+        // Attached again, both directions work.
+        assert!(E6600_2.attach(&FIT_I));
+        let ev = receive_pair(&mut srdo, &normal, 1200);
+        assert_eq!(ev[0], Event::SrdoEvent(0x1301));
+        assert_eq!(fit_n(), 0x1234_5678u32.to_ne_bytes());
+        let r = srdo.send(
+            &mut port,
+            NmtState::Operational,
+            0x1302,
+            Ticks(1300),
+            &mut q,
+            false,
+        );
+        assert_eq!(r, Ok(None), "the success event is queued");
+        // The variables' value in CANopen byte order on 0x103, then its
+        // complement on 0x104 (SAFETY_BEHAVIOUR.md section 4).
+        assert_eq!(
+            port.0,
+            [
+                CanFrame::new(CanId::std_masked(0x103), &normal),
+                CanFrame::new(CanId::std_masked(0x104), &inverted)
+            ]
+        );
+        let ev = run(&mut srdo, &mut q, manual_app);
+        assert_eq!(ev[0], Event::SrdoEvent(0x1302));
+        detach();
     }
 
     /// Dummy entries (CiA 301 data type indices 0x0001..0x0007): only sub 0,
