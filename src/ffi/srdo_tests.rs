@@ -380,6 +380,25 @@ fn srdo_state_is_read_and_written_through_the_c_calls() {
     );
 }
 
+/// The status calls as the first call after the instance is selected (the
+/// library has no status table of the instance at hand yet): the same byte
+/// and the same write rule (manual 2.5.3: bits 4-7, bits 0-3 reserved 0).
+// req: M-2.5.3-STATUS
+#[test]
+fn srdo_state_calls_first_after_selecting_the_instance() {
+    let _node = Node::new();
+    assert_eq!(CcmSetSrdoState(0x30, 0x1301), 0);
+    assert!(global::select(MAX_INSTANCES - 1));
+    assert_eq!(state_of(0x1301), (0, 0x30));
+    assert!(global::select(MAX_INSTANCES - 1));
+    assert_eq!(CcmSetSrdoState(0x9F, 0x1301), 0);
+    assert_eq!(state_of(0x1301), (0, 0x90));
+    assert!(global::select(MAX_INSTANCES - 1));
+    let none = CopKernel::SrdoNotExist.code();
+    assert_eq!(CcmSetSrdoState(0x30, 0x1303), none);
+    assert_eq!(state_of(0x1303), (none, 0xEE));
+}
+
 // req: M-2.8.2-CHECK, M-2.8.8-CALCCRC
 #[test]
 fn check_config_names_the_first_bad_srdo() {

@@ -600,6 +600,42 @@ mod dynamic {
         run(srdo, &mut q, manual_app)
     }
 
+    /// SAFETY_BEHAVIOUR.md section 9: *entering* OPERATIONAL starts the
+    /// SRDOs with fresh timers. Being told OPERATIONAL again while in it
+    /// (the stack reports changes only) is no entry: the held first frame,
+    /// the status bytes and the SCT deadline stay.
+    // req: SB-9-LEAVE, M-1.1-SCT
+    #[test]
+    fn operational_again_is_not_a_new_start() {
+        let (_g, od, mut srdo) = setup_receiving();
+        operational(&od, &mut srdo, 0);
+        let ev = receive_pair(&mut srdo, &[1, 0], 100);
+        assert_eq!(ev[0], Event::SrdoEvent(0x1301));
+        assert_eq!(srdo.get_state(0x1301), Ok(0x30));
+        let mut q = ActionQueue::new();
+        srdo.on_frame(NmtState::Operational, &rx(0x101, &[2, 0], 300), &mut q);
+        srdo.on_state(&od, NmtState::Operational, 5, Ticks(320));
+        assert_eq!(srdo.get_state(0x1301), Ok(0x30), "status kept");
+        srdo.on_frame(
+            NmtState::Operational,
+            &rx(0x102, &[0xFD, 0xFF], 321),
+            &mut q,
+        );
+        let ev = run(&mut srdo, &mut q, manual_app);
+        assert_eq!(ev[0], Event::SrdoEvent(0x1301), "the held frame completes");
+        assert_eq!(get(&od, 0x6201, 1), 2);
+        // SCT (25 ms) from the first frame at 300, not from tick 320.
+        let errors = |srdo: &mut Srdo, t: u32| {
+            let ev = timers(srdo, t, false);
+            ev.into_iter()
+                .filter(|e| matches!(e, Event::SrdoError(..)))
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(errors(&mut srdo, 550), []);
+        let sct = Event::SrdoError(0x1301, CopKernel::SrdoSctTimeout);
+        assert_eq!(errors(&mut srdo, 551), [sct]);
+    }
+
     /// An attached variable must exist and be 1, 2, 4 or 8 bytes wide and
     /// at least as wide as the object's type (check.rs step 5).
     // req: SB-2-MAPPING
@@ -1158,7 +1194,15 @@ mod dynamic {
         assert_eq!(errors(&timers(&mut srdo, 1000, false)), []);
         srdo.begin_cycle();
         assert!(!srdo.at_rest(NmtState::Operational, Ticks(1001)));
-        assert_eq!(errors(&timers(&mut srdo, 1001, false)), [(0x1301, sct)]);
+        // The report of SRDO 1 interrupts the pass; until the pass is over
+        // the module is not at rest.
+        let mut q = ActionQueue::new();
+        let done = srdo.poll_with(NmtState::Operational, Ticks(1001), &mut q, false);
+        assert!(!done, "SRDOs 2 to 4 still to check");
+        assert!(!srdo.at_rest(NmtState::Operational, Ticks(1001)));
+        assert_eq!(errors(&run(&mut srdo, &mut q, manual_app)), [(0x1301, sct)]);
+        while !srdo.poll_with(NmtState::Operational, Ticks(1001), &mut q, false) {}
+        assert_eq!(errors(&run(&mut srdo, &mut q, manual_app)), []);
         assert_eq!(errors(&timers(&mut srdo, 5000, false)), []);
     }
 
