@@ -1355,6 +1355,42 @@ mod static_mapping {
         assert_eq!(srdo.check_config_with(&od, 8), expected);
     }
 
+    // SRDO 1: an odd number of entries; SRDO 2: entries of 4 bits.
+    crate::obd_create_srdo_commu!(mod oc1, 0x1301, 0, 25, 20, 0x101, 0x102);
+    crate::obd_create_srdo_commu!(mod oc2, 0x1302, 0, 25, 20, 0x103, 0x104);
+    crate::obd_create_srdo_mapp!(
+        mod om1,
+        0x1381,
+        [0x6200_0108, 0x6300_0108, 0x6200_0208]
+    );
+    crate::obd_create_srdo_mapp!(mod om2, 0x1382, [0x6200_0104, 0x6300_0104]);
+    crate::obd_create_srdo_cfg_valid!(mod o_cfg_valid);
+    crate::obd_create_srdo_crc!(mod o_crcs, [0, 0]);
+    static UNFIT: [ObdEntry; 6] = crate::srdo_obd_entries![oc1, oc2, om1, om2, o_cfg_valid, o_crcs];
+
+    /// SAFETY_BEHAVIOUR.md section 10: the fields are accepted only for a
+    /// mapping whose entries are the buffers' variables, and section 2: a
+    /// mapping has normal/inverted pairs (an even count) of whole numeric
+    /// objects. A constant mapping without pairs or with parts of bytes
+    /// has no fields that could match it (kCopSrdoErrorMapp), even when the
+    /// buffers start at the mapped variables.
+    // req: M-2.12.1-STATIC-FIELDS, SB-2-MAPPING
+    #[test]
+    fn fields_for_a_mapping_without_pairs_or_whole_bytes_are_refused() {
+        let (_g, od, mut srdo) = setup_with(&UNFIT);
+        let bad = Err(CopKernel::SrdoErrorMapp);
+        for idx in [0x1301, 0x1302] {
+            let r = srdo.static_define_var_fields(&od, idx, &NORMAL[0..2], &INVERTED[0..2]);
+            assert_eq!(r, bad, "{idx:#x}");
+            set(&od, idx, 1, 2);
+        }
+        seal(&od, &srdo);
+        assert_eq!(
+            srdo.check_config_with(&od, 8),
+            Err((CopKernel::SrdoErrorMapp, 0x1301))
+        );
+    }
+
     // req: M-2.12.1-STATIC-FIELDS
     #[test]
     fn active_srdo_without_fields_fails_the_check() {
@@ -1545,6 +1581,100 @@ fn gfc_is_reported_only_pre_operational_and_operational() {
         assert_eq!(ev, expected, "{state:?}, DLC {}", data.len());
     }
     assert_eq!(srdo.gfc_ignored(), if gfc { 3 } else { 0 });
+}
+
+/// The subindex tables of the `OBD_CREATE_SRDO_*` equivalents: the macros'
+/// parameters as manual 2.10.1 describes them, the objects as
+/// SAFETY_BEHAVIOUR.md section 1 and the table of src/srdo/objects.rs lay
+/// them out (sub 4 and, with static mapping, the mapping constant). The
+/// dictionaries build these tables at compile time; here they are built at
+/// run time from the same functions.
+// req: M-2.10.1-MACROS
+#[test]
+fn srdo_object_tables_as_the_macros_declare_them() {
+    use super::objects::*;
+    use crate::config::SRDO_USE_STATIC_MAPPING;
+    fn leak<T>(v: T) -> &'static T {
+        Box::leak(Box::new(v))
+    }
+    type Row = (u8, DataType, Access, Option<Vec<u8>>);
+    let rows = |subs: &[ObdSubEntry]| -> Vec<Row> {
+        subs.iter()
+            .map(|s| {
+                let default = s.default_value().map(<[u8]>::to_vec);
+                (s.sub(), s.data_type().unwrap(), s.access(), default)
+            })
+            .collect()
+    };
+    let (u8_, u16_, u32_) = (DataType::UInt8, DataType::UInt16, DataType::UInt32);
+    let ne16 = |v: u16| Some(v.to_ne_bytes().to_vec());
+    let ne32 = |v: u32| Some(v.to_ne_bytes().to_vec());
+    // OBD_CREATE_SRDO_COMMU(ind, num, dir 1, sct 30, srvt 15, 0x101, 0x102).
+    let vars = leak(CommuVars::new());
+    let commu = commu_subs(vars, leak(CommuDefaults::new(1, 30, 15, 0x101, 0x102)));
+    assert_eq!(
+        rows(&commu),
+        [
+            (0, u8_, Access::CR, Some(vec![6])),
+            (1, u8_, Access::SRW, Some(vec![1])),
+            (2, u16_, Access::SRW, ne16(30)),
+            (3, u8_, Access::SRW, Some(vec![15])),
+            (4, u8_, Access::CR, Some(vec![254])),
+            (5, u32_, Access::SRW, ne32(0x101)),
+            (6, u32_, Access::SRW, ne32(0x102)),
+        ]
+    );
+    let var_of = |s: &ObdSubEntry| s.ram_var(0).map(<[AtomicU8]>::as_ptr);
+    assert_eq!(var_of(&commu[1]), Some(vars.direction.as_ptr()));
+    assert_eq!(var_of(&commu[2]), Some(vars.sct.as_ptr()));
+    assert_eq!(var_of(&commu[3]), Some(vars.srvt.as_ptr()));
+    assert_eq!(var_of(&commu[4]), None, "a constant");
+    assert_eq!(var_of(&commu[5]), Some(vars.cob1.as_ptr()));
+    assert_eq!(var_of(&commu[6]), Some(vars.cob2.as_ptr()));
+    // OBD_BEGIN_SRDO_MAPP(ind, num, cnt 2) with two entries; the subindices
+    // up to SRDO_MAX_MAPPENTRIES exist with 0.
+    let mvars = leak(MappVars::new());
+    let mapp = mapp_subs(mvars, leak(MappDefaults::new(&[0x6200_0108, 0x6300_0108])));
+    let access = if SRDO_USE_STATIC_MAPPING {
+        Access::CR
+    } else {
+        Access::SRW
+    };
+    let mut expected = vec![
+        (0, u8_, access, Some(vec![2])),
+        (1, u32_, access, ne32(0x6200_0108)),
+        (2, u32_, access, ne32(0x6300_0108)),
+    ];
+    expected.extend(
+        (3..=crate::config::SRDO_MAX_MAPPENTRIES as u8).map(|sub| (sub, u32_, access, ne32(0))),
+    );
+    assert_eq!(rows(&mapp), expected);
+    let mapped_var = (!SRDO_USE_STATIC_MAPPING).then(|| mvars.entries[4..].as_ptr());
+    assert_eq!(var_of(&mapp[2]), mapped_var);
+    // OBD_CREATE_SRDO_GFC_PARAM(), OBD_CREATE_SRDO_CFG_VALID(): U8 rw 0.
+    let byte = leak(decl::zeroed::<1>());
+    for subs in [gfc_param_subs(byte), cfg_valid_subs(byte)] {
+        assert_eq!(rows(&subs), [(0, u8_, Access::RW, Some(vec![0]))]);
+        assert_eq!(var_of(&subs[0]), Some(byte.as_ptr()));
+    }
+    // OBD_BEGIN_SRDO_CRC(cnt 3): sub 0 the count, one U16 rw per SRDO.
+    let crc_vars = leak(decl::zeroed::<6>());
+    let crc = crc_subs::<4>(&[3], crc_vars, leak(crc_defaults::<6>(&[0x1234, 0xABCD])));
+    assert_eq!(
+        rows(&crc),
+        [
+            (0, u8_, Access::CR, Some(vec![3])),
+            (1, u16_, Access::RW, ne16(0x1234)),
+            (2, u16_, Access::RW, ne16(0xABCD)),
+            (3, u16_, Access::RW, ne16(0)),
+        ]
+    );
+    assert_eq!(var_of(&crc[3]), Some(crc_vars[4..].as_ptr()));
+    // More CRCs than entries: the extra ones are left out.
+    assert_eq!(
+        crc_defaults::<2>(&[0x1234, 0x5678]),
+        0x1234u16.to_ne_bytes()
+    );
 }
 
 #[test]
