@@ -187,13 +187,15 @@ pub const fn cfg_valid_subs(var: &'static [AtomicU8; 1]) -> [ObdSubEntry; 1] {
     byte_subs(var)
 }
 
-/// The CRC defaults in CPU byte order, two bytes per entry.
-// Indexing is bounded by the loop condition.
+/// The CRC defaults in CPU byte order, two bytes per entry: `B` is twice
+/// the number of entries (another `B` fails to compile).
+// Indexing is bounded by the assertion and the loop condition.
 #[allow(clippy::indexing_slicing)]
 pub const fn crc_defaults<const B: usize>(crcs: &[u16]) -> [u8; B] {
+    assert!(2 * crcs.len() == B, "two bytes per CRC entry");
     let mut out = [0u8; B];
     let mut i = 0;
-    while i < crcs.len() && 2 * i + 1 < B {
+    while i < crcs.len() {
         let b = crcs[i].to_ne_bytes();
         out[2 * i] = b[0];
         out[2 * i + 1] = b[1];
@@ -338,4 +340,32 @@ macro_rules! srdo_obd_entries {
     ($($m:path),+ $(,)?) => {
         [$($crate::srdo_obd_entry!($m)),+]
     };
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::od::{ByteOrder, ObdEntry, ObjectDictionary};
+
+    crate::obd_create_srdo_crc!(mod crcs, [0x1234, 0xBEEF, 0x00FF]);
+    static PART: [ObdEntry; 1] = crate::srdo_obd_entries![crcs];
+
+    /// `OBD_BEGIN_SRDO_CRC` ... `OBD_END_SRDO_CRC` (manual 2.10.1): sub 0 the
+    /// count, sub n the default CRC of SRDO n, restored as the default.
+    #[test]
+    fn crc_object_holds_the_listed_defaults() {
+        let od = ObjectDictionary::new(&PART, &[], &[]).unwrap();
+        od.restore_defaults(0x1000, 0x1FFF);
+        assert_eq!(od.read_uint(0x13FF, 0), Ok(3));
+        for (sub, crc) in [(1, 0x1234), (2, 0xBEEF), (3, 0x00FF)] {
+            assert_eq!(od.read_uint(0x13FF, sub), Ok(crc), "sub {sub}");
+            let mut le = [0u8; 2];
+            assert_eq!(od.read(0x13FF, sub, ByteOrder::Wire, &mut le), Ok(2));
+            assert_eq!(u16::from_le_bytes(le), crc as u16);
+        }
+        let mut expected = [0u8; 6];
+        for (i, crc) in [0x1234u16, 0xBEEF, 0x00FF].iter().enumerate() {
+            expected[2 * i..2 * i + 2].copy_from_slice(&crc.to_ne_bytes());
+        }
+        assert_eq!(crcs::DEFAULTS, expected);
+    }
 }
