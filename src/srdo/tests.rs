@@ -1659,7 +1659,11 @@ fn srdo_object_tables_as_the_macros_declare_them() {
     }
     // OBD_BEGIN_SRDO_CRC(cnt 3): sub 0 the count, one U16 rw per SRDO.
     let crc_vars = leak(decl::zeroed::<6>());
-    let crc = crc_subs::<4>(&[3], crc_vars, leak(crc_defaults::<6>(&[0x1234, 0xABCD])));
+    let crc = crc_subs::<4>(
+        &[3],
+        crc_vars,
+        leak(crc_defaults::<6>(&[0x1234, 0xABCD, 0])),
+    );
     assert_eq!(
         rows(&crc),
         [
@@ -1670,11 +1674,20 @@ fn srdo_object_tables_as_the_macros_declare_them() {
         ]
     );
     assert_eq!(var_of(&crc[3]), Some(crc_vars[4..].as_ptr()));
-    // More CRCs than entries: the extra ones are left out.
     assert_eq!(
-        crc_defaults::<2>(&[0x1234, 0x5678]),
-        0x1234u16.to_ne_bytes()
+        crc_defaults::<4>(&[0x1234, 0x5678]),
+        [0x1234u16.to_ne_bytes(), 0x5678u16.to_ne_bytes()].concat()[..]
     );
+}
+
+/// The defaults of the CRC object have exactly two bytes per listed CRC:
+/// another length is refused (at compile time in the declaration macro)
+/// instead of cutting CRCs off or adding zeros.
+// req: M-2.10.1-MACROS
+#[test]
+#[should_panic(expected = "two bytes per CRC entry")]
+fn crc_defaults_of_another_length_are_refused() {
+    let _ = crate::srdo::objects::crc_defaults::<2>(&[0x1234, 0x5678]);
 }
 
 #[test]
