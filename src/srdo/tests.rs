@@ -1594,9 +1594,15 @@ fn gfc_is_reported_only_pre_operational_and_operational() {
 fn srdo_object_tables_as_the_macros_declare_them() {
     use super::objects::*;
     use crate::config::SRDO_USE_STATIC_MAPPING;
-    fn leak<T>(v: T) -> &'static T {
-        Box::leak(Box::new(v))
-    }
+    // Statics, as the dictionaries declare them (no leaked heap, which Miri
+    // would report).
+    static VARS: CommuVars = CommuVars::new();
+    static COMMU_DEFAULTS: CommuDefaults = CommuDefaults::new(1, 30, 15, 0x101, 0x102);
+    static MVARS: MappVars = MappVars::new();
+    static MAPP_DEFAULTS: MappDefaults = MappDefaults::new(&[0x6200_0108, 0x6300_0108]);
+    static BYTE: [AtomicU8; 1] = decl::zeroed::<1>();
+    static CRC_VARS: [AtomicU8; 6] = decl::zeroed::<6>();
+    static CRC_DEFAULTS: [u8; 6] = crc_defaults::<6>(&[0x1234, 0xABCD, 0]);
     type Row = (u8, DataType, Access, Option<Vec<u8>>);
     let rows = |subs: &[ObdSubEntry]| -> Vec<Row> {
         subs.iter()
@@ -1610,8 +1616,8 @@ fn srdo_object_tables_as_the_macros_declare_them() {
     let ne16 = |v: u16| Some(v.to_ne_bytes().to_vec());
     let ne32 = |v: u32| Some(v.to_ne_bytes().to_vec());
     // OBD_CREATE_SRDO_COMMU(ind, num, dir 1, sct 30, srvt 15, 0x101, 0x102).
-    let vars = leak(CommuVars::new());
-    let commu = commu_subs(vars, leak(CommuDefaults::new(1, 30, 15, 0x101, 0x102)));
+    let vars = &VARS;
+    let commu = commu_subs(vars, &COMMU_DEFAULTS);
     assert_eq!(
         rows(&commu),
         [
@@ -1633,8 +1639,8 @@ fn srdo_object_tables_as_the_macros_declare_them() {
     assert_eq!(var_of(&commu[6]), Some(vars.cob2.as_ptr()));
     // OBD_BEGIN_SRDO_MAPP(ind, num, cnt 2) with two entries; the subindices
     // up to SRDO_MAX_MAPPENTRIES exist with 0.
-    let mvars = leak(MappVars::new());
-    let mapp = mapp_subs(mvars, leak(MappDefaults::new(&[0x6200_0108, 0x6300_0108])));
+    let mvars = &MVARS;
+    let mapp = mapp_subs(mvars, &MAPP_DEFAULTS);
     let access = if SRDO_USE_STATIC_MAPPING {
         Access::CR
     } else {
@@ -1652,18 +1658,14 @@ fn srdo_object_tables_as_the_macros_declare_them() {
     let mapped_var = (!SRDO_USE_STATIC_MAPPING).then(|| mvars.entries[4..].as_ptr());
     assert_eq!(var_of(&mapp[2]), mapped_var);
     // OBD_CREATE_SRDO_GFC_PARAM(), OBD_CREATE_SRDO_CFG_VALID(): U8 rw 0.
-    let byte = leak(decl::zeroed::<1>());
+    let byte = &BYTE;
     for subs in [gfc_param_subs(byte), cfg_valid_subs(byte)] {
         assert_eq!(rows(&subs), [(0, u8_, Access::RW, Some(vec![0]))]);
         assert_eq!(var_of(&subs[0]), Some(byte.as_ptr()));
     }
     // OBD_BEGIN_SRDO_CRC(cnt 3): sub 0 the count, one U16 rw per SRDO.
-    let crc_vars = leak(decl::zeroed::<6>());
-    let crc = crc_subs::<4>(
-        &[3],
-        crc_vars,
-        leak(crc_defaults::<6>(&[0x1234, 0xABCD, 0])),
-    );
+    let crc_vars = &CRC_VARS;
+    let crc = crc_subs::<4>(&[3], crc_vars, &CRC_DEFAULTS);
     assert_eq!(
         rows(&crc),
         [
