@@ -249,12 +249,8 @@ impl General {
                 return None;
             }
             for k in 0..wire {
-                let pos = if cfg!(target_endian = "little") {
-                    k
-                } else {
-                    wire - 1 - k
-                };
-                let byte = var.get(pos)?;
+                // Frame byte k is the k-th least significant byte.
+                let byte = var.get(cpu_byte(k, wire, LITTLE))?;
                 // A byte written by two entries would depend on their order.
                 if frames.iter().flatten().any(|b| core::ptr::eq(*b, byte)) {
                     return None;
@@ -329,6 +325,21 @@ impl General {
     }
 }
 
+/// The byte order of the CPU the library is built for.
+#[cfg(not(srdo_static_mapping))]
+const LITTLE: bool = cfg!(target_endian = "little");
+
+/// Where byte `k` of significance (0: the least significant) of an
+/// `n`-byte value stands in memory, in little-endian (`little`) or
+/// big-endian byte order; its own inverse. A parameter, not the build's
+/// byte order, so that both orders are tested on every host; with the
+/// constant [`LITTLE`] it folds away.
+#[cfg(not(srdo_static_mapping))]
+#[inline(always)]
+pub(super) const fn cpu_byte(k: usize, n: usize, little: bool) -> usize {
+    if little { k } else { n - 1 - k }
+}
+
 /// Reads a variable of 1, 2, 4 or 8 bytes in CPU byte order as an integer.
 #[cfg(not(srdo_static_mapping))]
 #[inline]
@@ -336,11 +347,7 @@ fn load_native(m: &[AtomicU8]) -> u64 {
     let n = m.len();
     let mut v = 0u64;
     for (i, b) in m.iter().enumerate() {
-        let pos = if cfg!(target_endian = "little") {
-            i
-        } else {
-            n - 1 - i
-        };
+        let pos = cpu_byte(i, n, LITTLE);
         v |= u64::from(b.load(Ordering::Relaxed))
             .checked_shl(8 * pos as u32)
             .unwrap_or(0);
@@ -354,11 +361,7 @@ fn load_native(m: &[AtomicU8]) -> u64 {
 fn store_native(m: &[AtomicU8], v: u64) {
     let n = m.len();
     for (i, b) in m.iter().enumerate() {
-        let pos = if cfg!(target_endian = "little") {
-            i
-        } else {
-            n - 1 - i
-        };
+        let pos = cpu_byte(i, n, LITTLE);
         b.store(
             v.checked_shr(8 * pos as u32).unwrap_or(0) as u8,
             Ordering::Relaxed,

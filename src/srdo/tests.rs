@@ -965,6 +965,81 @@ mod dynamic {
         }
     }
 
+    fn store_u32(var: &[AtomicU8; 4], v: u32) {
+        for (b, x) in var.iter().zip(v.to_ne_bytes()) {
+            b.store(x, core::sync::atomic::Ordering::Relaxed);
+        }
+    }
+
+    fn load_u32(var: &[AtomicU8; 4]) -> u32 {
+        u32::from_ne_bytes(core::array::from_fn(|k| {
+            var[k].load(core::sync::atomic::Ordering::Relaxed)
+        }))
+    }
+
+    /// Variables wider than their mapped length (the general plan): the
+    /// frame carries only the mapped low bytes of each, in mapping order,
+    /// and a received value fills the whole variable, sign-extended for a
+    /// signed type and zero-extended otherwise (manual 2.6: the data of
+    /// the mapped objects, little-endian on the bus; CiA 301 7.4.7 for the
+    /// mapping lengths).
+    // req: M-2.5.2-RECEIVE, M-2.8.1-SEND
+    #[test]
+    fn wider_variables_carry_their_mapped_bytes_and_are_extended() {
+        let (_g, od, _srdo) = setup();
+        // Per frame: INTEGER24 in a 4-byte variable, an UNSIGNED8, 16 bits
+        // of an UNSIGNED32: 3 + 1 + 2 = 6 bytes.
+        let mapping = [
+            0x6500_0118u32,
+            0x6500_0218,
+            0x6200_0108,
+            0x6300_0108,
+            0x6400_0310,
+            0x6400_0410,
+        ];
+        set(&od, 0x1381, 0, mapping.len() as u64);
+        for (sub, e) in (1u8..).zip(mapping) {
+            set(&od, 0x1381, sub, u64::from(e));
+        }
+        assert_eq!(check::mapped_len(&od, 0x1301), Ok(6));
+        let p = plan::Plan::build(&od, 0x1301).unwrap();
+        assert!(matches!(p, plan::Plan::General(_)), "wider variables");
+        // Frame bytes (little-endian): FF 80 F1 | 44 | FE FF and their
+        // complement 00 7F 0E | BB | 01 00.
+        let normal = 0xFFFE_44F1_80FFu64;
+        let inverted = !normal & crate::wire::srdo::payload_mask(6);
+        clear_variables();
+        assert!(p.scatter(normal, inverted, 6));
+        assert_eq!(load_u32(&WIDE_N), 0xFFF1_80FF, "negative INTEGER24");
+        assert_eq!(load_u32(&WIDE_I), 0x000E_7F00, "positive INTEGER24");
+        assert_eq!(load_u32(&U32_VAR), 0x0000_FFFE, "UNSIGNED32, 16 bits");
+        assert_eq!(load_u32(&U32_VAR_I), 0x0000_0001, "UNSIGNED32, 16 bits");
+        assert_eq!(get(&od, 0x6200, 1), 0x44);
+        assert_eq!(get(&od, 0x6300, 1), 0xBB);
+        // Sending: the bytes above the mapped length stay out of the frame.
+        store_u32(&WIDE_N, 0x12F1_80FF);
+        store_u32(&WIDE_I, 0xED0E_7F00);
+        store_u32(&U32_VAR, 0xABCD_FFFE);
+        store_u32(&U32_VAR_I, 0x5432_0001);
+        assert_eq!(p.gather(6), Some((normal, inverted)));
+    }
+
+    /// The byte of significance k of an n-byte variable in either byte
+    /// order, against the standard library's conversions.
+    #[test]
+    fn cpu_byte_in_both_byte_orders() {
+        let v = 0x0102_0304_0506_0708u64;
+        for n in [1usize, 2, 4, 8] {
+            let low = v & crate::wire::srdo::payload_mask(n as u8);
+            let (le, be) = (low.to_le_bytes(), low.to_be_bytes());
+            for k in 0..n {
+                let byte = (low >> (8 * k)) as u8;
+                assert_eq!(le[plan::cpu_byte(k, n, true)], byte, "n {n} k {k}");
+                assert_eq!(be[8 - n + plan::cpu_byte(k, n, false)], byte, "n {n} k {k}");
+            }
+        }
+    }
+
     // req: SB-5-NO-WRITE-ON-ERROR, M-2.5.3-STATUS
     #[test]
     fn errors_leave_variables_untouched_and_set_status() {
