@@ -15,6 +15,9 @@
 #                                        mutation testing, each file in configurations
 #                                        that compile its code; compares the survivors
 #                                        with docs/evidence/equivalent_mutants.toml
+#   scripts/evidence.sh unsafe-reach     which unsafe blocks each Rust test binary
+#                                        reaches (docs/evidence/unsafe_reach.md); fails
+#                                        when the default set of scripts/miri.sh misses one
 #   scripts/evidence.sh report           docs/evidence/report.md with its figures
 #   scripts/evidence.sh all              trace, coverage, mutants, report (long)
 #
@@ -192,6 +195,28 @@ cmd_mutants() {
     python3 scripts/evidence/mutants.py "$WORK/mutants" "$OUT/mutants.json" docs/evidence/equivalent_mutants.toml
 }
 
+# Line coverage per test binary (default switches): the unit tests, then
+# each file of tests/ alone; unsafe_reach.py compares the blocks they reach
+# with the set scripts/miri.sh runs by default.
+# The same set as scripts/miri.sh without --all (lib: the unit tests).
+MIRI_DEFAULT=lib,dynod
+cmd_unsafe_reach() {
+    setup
+    local dir="$WORK/unsafe-reach" t
+    mkdir -p "$dir"
+    export CARGO_LLVM_COV_TARGET_DIR="$PWD/target/unsafe-reach"
+    log "unsafe-reach: unit tests"
+    cargo llvm-cov --lib -j2 --json --output-path "$dir/lib.json" >"$dir/lib.log" 2>&1 ||
+        { tail -30 "$dir/lib.log"; exit 1; }
+    for t in tests/*.rs; do
+        t=$(basename "$t" .rs)
+        log "unsafe-reach: tests/$t.rs"
+        cargo llvm-cov --test "$t" -j2 --json --output-path "$dir/$t.json" >"$dir/$t.log" 2>&1 ||
+            { tail -30 "$dir/$t.log"; exit 1; }
+    done
+    python3 scripts/evidence/unsafe_reach.py "$OUT/unsafe_reach.md" "$MIRI_DEFAULT" "$dir"/*.json
+}
+
 cmd_report() {
     setup
     cmd_trace
@@ -219,7 +244,8 @@ coverage) cmd_coverage ;;
 coverage-c) cmd_coverage_c ;;
 coverage-report) cov_report +nightly ;;
 mutants) shift; cmd_mutants "$@" ;;
+unsafe-reach) cmd_unsafe_reach ;;
 report) cmd_report ;;
-all) cmd_trace; cmd_coverage; cmd_mutants; cmd_report ;;
-*) sed -n '2,22p' "$0"; exit 2 ;;
+all) cmd_trace; cmd_coverage; cmd_mutants; cmd_unsafe_reach; cmd_report ;;
+*) sed -n '2,25p' "$0"; exit 2 ;;
 esac

@@ -27,7 +27,7 @@ fn campaign_detects_every_fault_without_false_alarms() {
     let cycles = if cfg!(miri) {
         25
     } else if cfg!(target_endian = "big") {
-        20_000
+        10_000
     } else {
         100_000
     };
