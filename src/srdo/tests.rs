@@ -160,8 +160,16 @@ fn setup() -> (std::sync::MutexGuard<'static, ()>, ObjectDictionary, Srdo) {
 fn setup_with(
     generic: &'static [ObdEntry],
 ) -> (std::sync::MutexGuard<'static, ()>, ObjectDictionary, Srdo) {
+    setup_parts(generic, &DEVICE)
+}
+
+/// [`setup_with`] with the device objects `device`.
+fn setup_parts(
+    generic: &'static [ObdEntry],
+    device: &'static [ObdEntry],
+) -> (std::sync::MutexGuard<'static, ()>, ObjectDictionary, Srdo) {
     let guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
-    let od = ObjectDictionary::new(generic, &[], &DEVICE).unwrap();
+    let od = ObjectDictionary::new(generic, &[], device).unwrap();
     od.restore_defaults(0x1000, 0x9FFF);
     let mut srdo = Srdo::new();
     srdo.init(&od).unwrap();
@@ -1472,6 +1480,157 @@ mod static_mapping {
         assert_eq!(
             srdo.check_config_with(&od, 8),
             Err((CopKernel::SrdoErrorMapp, 0x1301))
+        );
+    }
+
+    // Fields that hold variables of different sizes and attached ones.
+    static MIX_N: [AtomicU8; 8] = decl::zeroed();
+    static MIX_I: [AtomicU8; 8] = decl::zeroed();
+    static ATT_N: [AtomicU8; 2] = decl::zeroed();
+    static ATT_I: [AtomicU8; 2] = decl::zeroed();
+    static E6710_1: ObdVarEntry = ObdVarEntry::new();
+    static E6710_2: ObdVarEntry = ObdVarEntry::new();
+    // 0x6700: an UNSIGNED16 and an UNSIGNED32 one after the other in each
+    // field (bytes 0..2 and 2..6).
+    static S6700: [ObdSubEntry; 5] = [
+        ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[4]),
+        var_in(1, DataType::UInt16, &MIX_N, 0, &[0; 2]),
+        var_in(2, DataType::UInt32, &MIX_N, 2, &[0; 4]),
+        var_in(3, DataType::UInt16, &MIX_I, 0, &[0; 2]),
+        var_in(4, DataType::UInt32, &MIX_I, 2, &[0; 4]),
+    ];
+    // 0x6710: two UNSIGNED16 whose variables the application attaches.
+    static S6710: [ObdSubEntry; 3] = [
+        ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[2]),
+        ObdSubEntry::var(1, DataType::UInt16, Access::PRW, &E6710_1, 2, None),
+        ObdSubEntry::var(2, DataType::UInt16, Access::PRW, &E6710_2, 2, None),
+    ];
+    static MIX_DEVICE: [ObdEntry; 2] = [
+        ObdEntry::new(0x6700, &S6700, None),
+        ObdEntry::new(0x6710, &S6710, None),
+    ];
+    // SRDO 1: the UNSIGNED16 pair, then the UNSIGNED32 pair (6 bytes);
+    // SRDO 2: the attached pair.
+    crate::obd_create_srdo_commu!(mod xc1, 0x1301, 0, 25, 20, 0x101, 0x102);
+    crate::obd_create_srdo_commu!(mod xc2, 0x1302, 0, 25, 20, 0x103, 0x104);
+    crate::obd_create_srdo_mapp!(
+        mod xm1,
+        0x1381,
+        [0x6700_0110, 0x6700_0310, 0x6700_0220, 0x6700_0420]
+    );
+    crate::obd_create_srdo_mapp!(mod xm2, 0x1382, [0x6710_0110, 0x6710_0210]);
+    crate::obd_create_srdo_cfg_valid!(mod x_cfg_valid);
+    crate::obd_create_srdo_crc!(mod x_crcs, [0, 0]);
+    static MIXED: [ObdEntry; 6] = crate::srdo_obd_entries![xc1, xc2, xm1, xm2, x_cfg_valid, x_crcs];
+
+    /// SAFETY_BEHAVIOUR.md section 10: each mapped variable must stand in
+    /// the field at the offset the entries before it give (the sum of
+    /// their lengths, CiA 301 7.4.7 mapping order), with its own size; an
+    /// attached variable (ObdVarEntry, check.rs step 5) counts like a RAM
+    /// variable.
+    // req: M-2.12.1-STATIC-FIELDS
+    #[test]
+    fn fields_of_variables_of_several_sizes_and_attached_variables() {
+        let (_g, od, mut srdo) = setup_parts(&MIXED, &MIX_DEVICE);
+        let bad = Err(CopKernel::SrdoErrorMapp);
+        assert_eq!(srdo.mapped_len(&od, 0x1301), Ok(6));
+        // The UNSIGNED32 at byte 2 of fields of exactly 6 bytes.
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1301, &MIX_N[..6], &MIX_I[..6]),
+            Ok(())
+        );
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1301, &MIX_N[..5], &MIX_I[..5]),
+            bad,
+            "fields too short for the UNSIGNED32"
+        );
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1301, &MIX_N[2..], &MIX_I[2..]),
+            bad,
+            "fields that start at the UNSIGNED32"
+        );
+        // Attached variables (none yet): the fields must be what is
+        // attached.
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1302, &ATT_N, &ATT_I),
+            bad,
+            "nothing attached"
+        );
+        assert!(E6710_1.attach(&ATT_N) && E6710_2.attach(&ATT_I));
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1302, &ATT_N, &ATT_I),
+            Ok(())
+        );
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1302, &ATT_I, &ATT_N),
+            bad,
+            "normal and inverted swapped"
+        );
+    }
+
+    // With granularity 16 (SRDO_MAX_MAPPENTRIES 8): SRDO 1 maps eight
+    // UNSIGNED16 entries of 0x6720, the most a mapping can have (four
+    // pairs, 8 bytes a field).
+    #[cfg(feature = "srdo-granularity-16")]
+    static FULL_N: [AtomicU8; 8] = decl::zeroed();
+    #[cfg(feature = "srdo-granularity-16")]
+    static FULL_I: [AtomicU8; 8] = decl::zeroed();
+    #[cfg(feature = "srdo-granularity-16")]
+    static S6720: [ObdSubEntry; 9] = [
+        ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[8]),
+        u16_var(1, &FULL_N, 0),
+        u16_var(2, &FULL_N, 2),
+        u16_var(3, &FULL_N, 4),
+        u16_var(4, &FULL_N, 6),
+        u16_var(5, &FULL_I, 0),
+        u16_var(6, &FULL_I, 2),
+        u16_var(7, &FULL_I, 4),
+        u16_var(8, &FULL_I, 6),
+    ];
+    #[cfg(feature = "srdo-granularity-16")]
+    static FULL_DEVICE: [ObdEntry; 1] = [ObdEntry::new(0x6720, &S6720, None)];
+    #[cfg(feature = "srdo-granularity-16")]
+    crate::obd_create_srdo_commu!(mod fc1, 0x1301, 0, 25, 20, 0x101, 0x102);
+    #[cfg(feature = "srdo-granularity-16")]
+    crate::obd_create_srdo_mapp!(
+        mod fm1,
+        0x1381,
+        [
+            0x6720_0110,
+            0x6720_0510,
+            0x6720_0210,
+            0x6720_0610,
+            0x6720_0310,
+            0x6720_0710,
+            0x6720_0410,
+            0x6720_0810
+        ]
+    );
+    #[cfg(feature = "srdo-granularity-16")]
+    crate::obd_create_srdo_cfg_valid!(mod f_cfg_valid);
+    #[cfg(feature = "srdo-granularity-16")]
+    crate::obd_create_srdo_crc!(mod f_crcs, [0]);
+    #[cfg(feature = "srdo-granularity-16")]
+    static FULL: [ObdEntry; 4] = crate::srdo_obd_entries![fc1, fm1, f_cfg_valid, f_crcs];
+
+    /// A mapping with SRDO_MAX_MAPPENTRIES entries (manual 2.4: 128 /
+    /// granularity) is a mapping like any other: the fields are checked
+    /// entry by entry, up to the last one.
+    // req: M-2.12.1-STATIC-FIELDS
+    #[cfg(feature = "srdo-granularity-16")]
+    #[test]
+    fn fields_of_a_mapping_with_the_most_entries() {
+        assert_eq!(crate::config::SRDO_MAX_MAPPENTRIES, 8);
+        let (_g, od, mut srdo) = setup_parts(&FULL, &FULL_DEVICE);
+        assert_eq!(srdo.mapped_len(&od, 0x1301), Ok(8));
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1301, &FULL_N, &FULL_I),
+            Ok(())
+        );
+        assert_eq!(
+            srdo.static_define_var_fields(&od, 0x1301, &FULL_N, &FULL_N),
+            Err(CopKernel::SrdoErrorMapp),
+            "the inverted entries are not in the normal field"
         );
     }
 
