@@ -140,6 +140,11 @@ def main():
         covered = sum(1 for r in trace["requirements"] if trace["tests"][r["id"]])
         md += [f"{covered} of {n} requirements checked by at least one test; the table is "
                "[docs/traceability.md](../traceability.md).", "", "![trace](trace.png)", ""]
+    reach = out / "unsafe_reach.md"
+    if reach.exists():
+        # unsafe_reach.py's text without its title.
+        body = reach.read_text().rstrip().splitlines()[1:]
+        md += ["## `unsafe` blocks and the Miri run"] + body + [""]
     faults = work / "faults.txt"
     if faults.exists():
         md += ["## Fault-injection campaign", "", "```", faults.read_text().rstrip(), "```", ""]
