@@ -147,6 +147,7 @@ crate::obd_create_srdo_cfg_valid!(mod g_cfg_valid);
 crate::obd_create_srdo_crc!(mod g_crcs, [0, 0, 0]);
 static GAPPED: [ObdEntry; 6] = crate::srdo_obd_entries![g1, g3, gm1, gm3, g_cfg_valid, g_crcs];
 static NO_CFG_VALID: [ObdEntry; 2] = crate::srdo_obd_entries![g1, gm1];
+static NO_CFG_VALID_ONLY: [ObdEntry; 3] = crate::srdo_obd_entries![g1, gm1, g_crcs];
 
 /// The dictionaries' variables are statics shared by all tests here; each
 /// test holds this lock.
@@ -352,6 +353,21 @@ fn init_finds_objects_and_refuses_bad_tables() {
         Err(CopKernel::ObdIndexNotExist),
         "0x13FF / 0x13FE missing"
     );
+    // Manual 2.10.1: OBD_CREATE_SRDO_CFG_VALID() belongs to every
+    // dictionary with SRDOs, also when their CRC object is there.
+    let no_cfg_valid = ObjectDictionary::new(&NO_CFG_VALID_ONLY, &[], &[]).unwrap();
+    assert_eq!(
+        s.discover(&no_cfg_valid, 64, false),
+        Err(CopKernel::ObdIndexNotExist),
+        "0x13FE missing"
+    );
+    let no_srdo = ObjectDictionary::new(&[], &[], &[]).unwrap();
+    assert_eq!(
+        s.discover(&no_srdo, 64, false),
+        Ok(()),
+        "no SRDO, no 0x13FE needed"
+    );
+    assert_eq!(s.count(), 0);
 }
 
 // req: M-2.5.3-STATUS
