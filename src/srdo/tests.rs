@@ -782,6 +782,50 @@ mod dynamic {
         detach();
     }
 
+    /// Manual 2.5.1: the first transmission after entering OPERATIONAL
+    /// waits 0.5 ms per node-ID (FIRST_SEND_DELAY_TICKS_PER_NODE, 5 ticks
+    /// of 100 µs), for every node-ID, not only node 1.
+    // req: M-2.5.1-FIRST-DELAY
+    #[test]
+    fn first_send_delay_grows_with_the_node_id() {
+        for node in [1u8, 4, 127] {
+            let (_g, od, mut srdo) = setup_receiving();
+            set(&od, 0x1302, 1, 1);
+            // SRDO 2 maps 0x6200 sub 1..4: normal, inverted, normal, inverted.
+            for (sub, v) in [(1, 0x12), (2, 0xED), (3, 0x34), (4, 0xCB)] {
+                set(&od, 0x6200, sub, v);
+            }
+            seal(&od, &srdo);
+            srdo.on_state(&od, NmtState::Operational, node, Ticks(1000));
+            assert!(srdo.is_running());
+            let first = 1000 + 5 * u32::from(node);
+            let mut q = ActionQueue::new();
+            let mut port = crate::port::Recorder::default();
+            let mut send_at = |srdo: &mut Srdo, t: u32| {
+                let r = srdo.send(
+                    &mut port,
+                    NmtState::Operational,
+                    0x1302,
+                    Ticks(t),
+                    &mut q,
+                    false,
+                );
+                q = ActionQueue::new();
+                r
+            };
+            assert_eq!(
+                send_at(&mut srdo, first - 1),
+                Err(CopKernel::SrdoNmtError),
+                "node {node}: before the delay"
+            );
+            assert!(
+                send_at(&mut srdo, first).is_ok(),
+                "node {node}: at the delay"
+            );
+            assert_eq!(port.0.len(), 2, "node {node}: one pair");
+        }
+    }
+
     /// Dummy entries (CiA 301 data type indices 0x0001..0x0007): only sub 0,
     /// only the size of their type, only in receive SRDOs, only with
     /// `SRDO_USE_DUMMY_MAPPING` (manual 2.4).
