@@ -1239,6 +1239,51 @@ mod dynamic {
         }
     }
 
+    /// The overruns `on_rx_overrun` queues, as (commu index) in report order.
+    fn overruns(srdo: &mut Srdo) -> Vec<u16> {
+        srdo.on_rx_overrun();
+        let mut q = ActionQueue::new();
+        let mut out = Vec::new();
+        loop {
+            let done = srdo.report_overrun(&mut q);
+            out.extend(
+                run(srdo, &mut q, manual_app)
+                    .into_iter()
+                    .filter_map(|e| match e {
+                        Event::SrdoError(idx, CopKernel::SrdoOverrun) => Some(idx),
+                        _ => None,
+                    }),
+            );
+            if done {
+                return out;
+            }
+        }
+    }
+
+    /// SAFETY_BEHAVIOUR.md section 5: a driver overrun is reported for
+    /// every running receive SRDO, also one whose SCT has just expired (it
+    /// is waiting for its next pair and still running).
+    // req: SB-5-OVERRUN
+    #[test]
+    fn overrun_reaches_a_receive_srdo_after_its_sct_timeout() {
+        let (_g, od, mut srdo) = setup();
+        receive_u16_pair(&od, 0x1302, 100, 2);
+        receive_config(&od, &srdo);
+        operational(&od, &mut srdo, 1000);
+        let before = overruns(&mut srdo);
+        assert_eq!(before, [0x1301, 0x1302]);
+        // SRDO 1's SCT (25 ms) expires at 1251; SRDO 2 (100 ms) still runs.
+        let errors: Vec<Event> = timers(&mut srdo, 1251, false)
+            .into_iter()
+            .filter(|e| matches!(e, Event::SrdoError(..)))
+            .collect();
+        assert_eq!(
+            errors,
+            [Event::SrdoError(0x1301, CopKernel::SrdoSctTimeout)]
+        );
+        assert_eq!(overruns(&mut srdo), before);
+    }
+
     // req: M-1.1-SCT
     #[test]
     fn sct_timeouts_of_several_srdos_at_their_own_ticks() {
