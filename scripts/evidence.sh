@@ -151,7 +151,9 @@ cov_c_tests() {
 # out is unviable there and caught or missed in a configuration that has it);
 # the combined result keeps the best outcome per mutant. The tests run are the
 # library's unit tests and the SRDO integration tests (MUTANT_TESTS), which
-# keeps a mutant at a build and well under a minute. Long: progress is
+# keeps a mutant at a build and well under a minute (the test command of a
+# mutant that makes a loop endless ends after 90 s, a timeout, which counts
+# as caught). Long: progress is
 # cargo-mutants' own (target/evidence/mutants/<file>-<config>/log), runs are
 # resumable (--iterate skips the mutants a previous run caught) and can be
 # split (MUTANT_SHARD=k/n, cargo-mutants --shard).
@@ -188,7 +190,7 @@ cmd_mutants() {
             log "mutants: $f in configuration $c ($(cargo mutants --list --file "$f" $(config_args "$c") "${extra[@]}" 2>/dev/null | wc -l) mutants; log $dir/log)"
             # shellcheck disable=SC2046
             cargo mutants -j1 --file "$f" --output "$dir" --no-shuffle "${iterate[@]}" "${shard[@]}" \
-                --baseline skip --timeout 300 --build-timeout 900 \
+                --baseline skip --timeout 90 --build-timeout 900 \
                 $(config_args "$c") "${extra[@]}" -- "${MUTANT_TESTS[@]}" 2>&1 | tee -a "$dir/log" | grep -E '^(MISSED|TIMEOUT)|mutants tested' >&2 || true
         done
     done
