@@ -1899,7 +1899,7 @@ mod sixty_four {
 /// `CcmConnectToNet` not even a valid GFC is reported. The stack drops such
 /// frames before the module (tests/srdo_nmt_gfc.rs); the module keeps the
 /// rule on its own.
-// req: M-1.3-GFC
+// req: M-1.3-GFC, SB-5-FOREIGN
 #[test]
 fn gfc_is_reported_only_pre_operational_and_operational() {
     let (_g, od, mut srdo) = setup();
@@ -1927,6 +1927,15 @@ fn gfc_is_reported_only_pre_operational_and_operational() {
             vec![]
         };
         assert_eq!(ev, expected, "{state:?}, DLC {}", data.len());
+    }
+    // Other identifiers (NMT, SYNC, a TPDO, a heartbeat; no SRDO runs) are
+    // neither an SRDO nor a GFC: offered on, not counted (section 5:
+    // identifiers of no active SRDO are ignored).
+    for id in [0x000, 0x080, 0x181, 0x701] {
+        let mut q = ActionQueue::new();
+        let taken = srdo.on_frame(NmtState::Operational, &rx(id, &[], 0), &mut q);
+        assert!(!taken, "{id:#x} is not the module's");
+        assert!(run(&mut srdo, &mut q, |_, _| None).is_empty(), "{id:#x}");
     }
     assert_eq!(srdo.gfc_ignored(), if gfc { 3 } else { 0 });
 }
