@@ -199,12 +199,11 @@ cmd_mutants() {
 
 # Line coverage per test binary (default switches): the unit tests, then
 # each file of tests/ alone; unsafe_reach.py compares the blocks they reach
-# with the set scripts/miri.sh runs by default.
-# The same set as scripts/miri.sh without --all (lib: the unit tests).
-MIRI_DEFAULT=lib,dynod
+# with the set scripts/miri.sh runs by default (lib: the unit tests).
 cmd_unsafe_reach() {
     setup
-    local dir="$WORK/unsafe-reach" t
+    local dir="$WORK/unsafe-reach" t miri_default
+    miri_default=$(scripts/miri.sh --print-default)
     mkdir -p "$dir"
     export CARGO_LLVM_COV_TARGET_DIR="$PWD/target/unsafe-reach"
     log "unsafe-reach: unit tests"
@@ -216,7 +215,7 @@ cmd_unsafe_reach() {
         cargo llvm-cov --test "$t" -j2 --json --output-path "$dir/$t.json" >"$dir/$t.log" 2>&1 ||
             { tail -30 "$dir/$t.log"; exit 1; }
     done
-    python3 scripts/evidence/unsafe_reach.py "$OUT/unsafe_reach.md" "$MIRI_DEFAULT" "$dir"/*.json
+    python3 scripts/evidence/unsafe_reach.py "$OUT/unsafe_reach.md" "$miri_default" "$dir"/*.json
 }
 
 cmd_report() {

@@ -9,6 +9,9 @@
 #   scripts/miri.sh --all      every test: also the other files of tests/
 #                              (about twice as long)
 #   scripts/miri.sh --serial   one binary after the other (with or without --all)
+#   scripts/miri.sh --print-default
+#                              the default set as `scripts/evidence.sh
+#                              unsafe-reach` checks it (lib,dynod)
 #
 # Undefined behaviour needs `unsafe`, and outside src/ffi (which Miri cannot
 # reach) the only `unsafe` blocks are those of src/od/table.rs. Line coverage
@@ -19,7 +22,7 @@
 # callbacks and a pool path, only the C tests reach); no other file of
 # tests/ reaches a block these two do not. So the default set runs every
 # block Miri can check; --all adds the other whole-stack scenarios over the
-# same blocks (long campaign, README "Tests").
+# same blocks (a long run outside the test command, README "The two commands").
 #
 # Miri interprets one thread at a time, so with two or more CPUs the tests
 # run as a queue of jobs taken by two workers (after one shared build):
@@ -32,6 +35,12 @@
 # script fails when any job fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# The files of tests/ the default run takes besides the unit tests.
+DEFAULT_TESTS=(dynod)
+if [ "${1:-}" = "--print-default" ]; then
+    (IFS=,; echo "lib,${DEFAULT_TESTS[*]}")
+    exit 0
+fi
 export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-target}/miri"
 . scripts/toolchains.sh
 MIRI=(cargo "+$COP_NIGHTLY" miri test -q)
@@ -45,16 +54,15 @@ for arg in "$@"; do
     esac
 done
 [ "$(nproc 2>/dev/null || echo 1)" -ge 2 ] || serial=1
-# The files of tests/ that run, largest first.
+# The test binaries of tests/ that run, largest file first.
 if [ "$all" = 1 ]; then
-    mapfile -t test_files < <(ls -S tests/*.rs)
+    mapfile -t tests < <(ls -S tests/*.rs | xargs -n1 basename -s .rs)
 else
-    # The set scripts/evidence.sh unsafe-reach checks (MIRI_DEFAULT).
-    test_files=(tests/dynod.rs)
+    tests=("${DEFAULT_TESTS[@]}")
 fi
 test_args=()
-for f in "${test_files[@]}"; do
-    test_args+=(--test "$(basename "$f" .rs)")
+for t in "${tests[@]}"; do
+    test_args+=(--test "$t")
 done
 
 if [ "$serial" = 1 ]; then
@@ -71,8 +79,8 @@ jobs=(
     "--lib -- od:: --skip od::dcf::"
     "--lib -- --skip od::"
 )
-for f in "${test_files[@]}"; do
-    jobs+=("--test $(basename "$f" .rs)")
+for t in "${tests[@]}"; do
+    jobs+=("--test $t")
 done
 
 logs=$(mktemp -d)
