@@ -1452,6 +1452,69 @@ mod dynamic {
             assert_eq!(ev[0], Event::SrdoError(0x1301, CopKernel::SrdoSctTimeout));
         }
     }
+
+    /// Outside OPERATIONAL no timer is checked. With the program monitor a
+    /// cycle reports `SctNotCheckedNotOperational` at its first poll and
+    /// nothing at the next; after that report (without the monitor: from
+    /// the start) the module is at rest, so the stack need not poll it.
+    // req: M-2.5.4-PROGMON
+    #[test]
+    fn outside_operational_a_cycle_reports_once_and_then_rests() {
+        let (_g, _od, mut srdo) = setup_receiving();
+        let pre = NmtState::PreOperational;
+        for cycle in 0..2u32 {
+            srdo.begin_cycle();
+            let t = 10 * cycle;
+            assert_eq!(srdo.at_rest(pre, Ticks(t)), !SRDO_USE_PROGMONITOR);
+            let mut events = Vec::new();
+            for poll in 0..3 {
+                let mut q = ActionQueue::new();
+                assert!(srdo.poll(pre, Ticks(t + poll), &mut q));
+                events.extend(run(&mut srdo, &mut q, manual_app));
+                assert!(srdo.at_rest(pre, Ticks(t + poll)), "cycle {cycle}, poll {poll}");
+            }
+            assert_eq!(events, pm(ProgMonEvent::SctNotCheckedNotOperational));
+        }
+    }
+
+    /// ARCHITECTURE.md "A cycle with nothing due": without the program
+    /// monitor a poll before the planned deadline (and, with the SRVT
+    /// switch, no first frame held) steps no SRDO; a pass that runs plans
+    /// the next deadline from the SRDOs' timers, after which the module
+    /// rests until that deadline; a pass ends at the end of the table.
+    #[cfg(not(srdo_use_progmonitor))]
+    #[test]
+    fn polls_with_nothing_due_step_no_srdo_and_a_pass_plans_the_next() {
+        for switch in [false, true] {
+            let (_g, od, mut srdo) = setup_receiving();
+            // SRDO 1's SCT (25 ms) runs from 0 to 250.
+            operational(&od, &mut srdo, 0);
+            let op = NmtState::Operational;
+            assert_eq!(timers(&mut srdo, 100, switch), []);
+            assert_eq!(srdo.cursor, 0, "tick 100, switch {switch}: no SRDO stepped");
+            // A pair at 110/111 moves the SCT to 360; the plan still says 250.
+            assert_eq!(receive_pair(&mut srdo, &[1, 0], 110), [Event::SrdoEvent(0x1301)]);
+            // With the switch the first frame seen since the plan makes the
+            // next poll a pass; without it the next pass is at 251.
+            assert_eq!(timers(&mut srdo, 150, switch), []);
+            let stepped = if switch { srdo.count() } else { 0 };
+            assert_eq!(usize::from(srdo.cursor), stepped, "tick 150, switch {switch}");
+            assert_eq!(timers(&mut srdo, 251, switch), []);
+            let stepped = if switch { 0 } else { srdo.count() };
+            assert_eq!(usize::from(srdo.cursor), stepped, "tick 251, switch {switch}");
+            // Either pass planned 360: at rest until then.
+            srdo.begin_cycle();
+            for t in [252, 300, 360] {
+                assert!(srdo.at_rest(op, Ticks(t)), "tick {t}, switch {switch}");
+            }
+            assert!(!srdo.at_rest(op, Ticks(361)));
+            assert_eq!(
+                timers(&mut srdo, 361, switch),
+                [Event::SrdoError(0x1301, CopKernel::SrdoSctTimeout)]
+            );
+            assert_eq!(usize::from(srdo.cursor), srdo.count(), "the pass ends at the last SRDO");
+        }
+    }
 }
 
 /// Static mapping: the variable fields must be the mapped variables.
