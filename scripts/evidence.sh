@@ -147,9 +147,11 @@ cov_c_tests() {
 }
 
 # Mutation testing. Every file is mutated in each configuration of
-# MUTANT_CONFIGS (default: all three; a mutant in code that a switch compiles
-# out is unviable there and caught or missed in a configuration that has it);
-# the combined result keeps the best outcome per mutant. The tests run are the
+# MUTANT_CONFIGS (default: all three; a mutant in a function that a switch
+# compiles out builds there and changes nothing: mutants.py does not count it
+# in that configuration); the combined result keeps the best outcome per
+# mutant. A run limited to a file's recorded survivors (`-- --re` of their
+# lines) updates only those. The tests run are the
 # library's unit tests and the SRDO integration tests (MUTANT_TESTS), which
 # keeps a mutant at a build and well under a minute (the test command of a
 # mutant that makes a loop endless ends after 90 s, a timeout, which counts
@@ -170,6 +172,13 @@ cmd_mutants() {
     if [ $# -gt 0 ] && [ "$1" = "--" ]; then shift; extra=("$@"); fi
     local shard=()
     [ -z "${MUTANT_SHARD:-}" ] || shard=(--shard "$MUTANT_SHARD")
+    # The cfg set of every configuration: mutants.py does not count a
+    # survivor in a configuration that compiles its function out.
+    mkdir -p "$WORK/mutants"
+    for c in "${CONFIG_NAMES[@]}"; do
+        # shellcheck disable=SC2046
+        cargo rustc --lib -q $(config_args "$c") -- --print cfg >"$WORK/mutants/cfg-$c.txt"
+    done
     for f in "${files[@]}"; do
         for c in "${configs[@]}"; do
             local dir iterate=()

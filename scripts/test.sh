@@ -26,6 +26,7 @@ run_stage() {
         cargo fmt --all -- --check
         scripts/layers.sh
         scripts/evidence.sh trace-check
+        python3 -m unittest discover -q -s scripts/evidence -p 'test_*.py'
         cargo clippy --all-targets -- -D warnings
         cargo clippy --lib --no-default-features -- -D warnings
         cargo clippy --lib --features srdo-static-mapping,srdo-granularity-16,pdo-bit-mapping,pdo-granularity-64 -- -D warnings

@@ -1471,7 +1471,10 @@ mod dynamic {
                 let mut q = ActionQueue::new();
                 assert!(srdo.poll(pre, Ticks(t + poll), &mut q));
                 events.extend(run(&mut srdo, &mut q, manual_app));
-                assert!(srdo.at_rest(pre, Ticks(t + poll)), "cycle {cycle}, poll {poll}");
+                assert!(
+                    srdo.at_rest(pre, Ticks(t + poll)),
+                    "cycle {cycle}, poll {poll}"
+                );
             }
             assert_eq!(events, pm(ProgMonEvent::SctNotCheckedNotOperational));
         }
@@ -1493,15 +1496,26 @@ mod dynamic {
             assert_eq!(timers(&mut srdo, 100, switch), []);
             assert_eq!(srdo.cursor, 0, "tick 100, switch {switch}: no SRDO stepped");
             // A pair at 110/111 moves the SCT to 360; the plan still says 250.
-            assert_eq!(receive_pair(&mut srdo, &[1, 0], 110), [Event::SrdoEvent(0x1301)]);
+            assert_eq!(
+                receive_pair(&mut srdo, &[1, 0], 110),
+                [Event::SrdoEvent(0x1301)]
+            );
             // With the switch the first frame seen since the plan makes the
             // next poll a pass; without it the next pass is at 251.
             assert_eq!(timers(&mut srdo, 150, switch), []);
             let stepped = if switch { srdo.count() } else { 0 };
-            assert_eq!(usize::from(srdo.cursor), stepped, "tick 150, switch {switch}");
+            assert_eq!(
+                usize::from(srdo.cursor),
+                stepped,
+                "tick 150, switch {switch}"
+            );
             assert_eq!(timers(&mut srdo, 251, switch), []);
             let stepped = if switch { 0 } else { srdo.count() };
-            assert_eq!(usize::from(srdo.cursor), stepped, "tick 251, switch {switch}");
+            assert_eq!(
+                usize::from(srdo.cursor),
+                stepped,
+                "tick 251, switch {switch}"
+            );
             // Either pass planned 360: at rest until then.
             srdo.begin_cycle();
             for t in [252, 300, 360] {
@@ -1512,7 +1526,11 @@ mod dynamic {
                 timers(&mut srdo, 361, switch),
                 [Event::SrdoError(0x1301, CopKernel::SrdoSctTimeout)]
             );
-            assert_eq!(usize::from(srdo.cursor), srdo.count(), "the pass ends at the last SRDO");
+            assert_eq!(
+                usize::from(srdo.cursor),
+                srdo.count(),
+                "the pass ends at the last SRDO"
+            );
         }
     }
 }
