@@ -15,6 +15,9 @@
 #                                        mutation testing, each file in configurations
 #                                        that compile its code; compares the survivors
 #                                        with docs/evidence/equivalent_mutants.toml
+#   scripts/evidence.sh mutants --survivors [FILE]
+#                                        only the recorded survivors again (after a new
+#                                        test): updates them in docs/evidence/mutants.json
 #   scripts/evidence.sh unsafe-reach     which unsafe blocks each Rust test binary
 #                                        reaches (docs/evidence/unsafe_reach.md); fails
 #                                        when the default set of scripts/miri.sh misses one
@@ -166,8 +169,9 @@ MUTANT_TESTS=(--lib --test srdo_bus --test srdo_check_od --test srdo_config --te
     --test srdo_filter --test srdo_nmt_gfc --test srdo_support --test srdo_transmit --test store_srdo)
 cmd_mutants() {
     setup
-    local files=("${MUTANT_FILES[@]}") extra=() configs
+    local files=("${MUTANT_FILES[@]}") extra=() configs suffix=""
     read -r -a configs <<<"${MUTANT_CONFIGS:-${CONFIG_NAMES[*]}}"
+    if [ "${1:-}" = "--survivors" ]; then suffix=-survivors; shift; fi
     if [ $# -gt 0 ] && [ "$1" != "--" ]; then files=("$1"); shift; fi
     if [ $# -gt 0 ] && [ "$1" = "--" ]; then shift; extra=("$@"); fi
     local shard=()
@@ -187,7 +191,12 @@ cmd_mutants() {
             # (mutants.py: run_name).
             local name=${f#src/}
             name=${name%.rs}
-            dir="$WORK/mutants/${name//\//-}-$c"
+            dir="$WORK/mutants/${name//\//-}-$c$suffix"
+            local only=()
+            if [ -n "$suffix" ]; then
+                only=(--re "$(python3 scripts/evidence/mutants.py --survivor-re "$f" "$OUT/mutants.json")")
+                [ "${only[1]}" != "" ] || continue
+            fi
             mkdir -p "$dir"
             if [ -f "$dir/mutants.out/outcomes.json" ]; then
                 # --iterate tests only what earlier runs did not catch; their
@@ -196,11 +205,11 @@ cmd_mutants() {
                 mkdir -p "$dir/runs"
                 cp -r "$dir/mutants.out" "$dir/runs/$(date -u +%Y%m%dT%H%M%S)"
             fi
-            log "mutants: $f in configuration $c ($(cargo mutants --list --file "$f" $(config_args "$c") "${extra[@]}" 2>/dev/null | wc -l) mutants; log $dir/log)"
+            log "mutants: $f in configuration $c ($(cargo mutants --list --file "$f" $(config_args "$c") "${only[@]}" "${extra[@]}" 2>/dev/null | wc -l) mutants; log $dir/log)"
             # shellcheck disable=SC2046
             cargo mutants -j1 --file "$f" --output "$dir" --no-shuffle "${iterate[@]}" "${shard[@]}" \
                 --baseline skip --timeout 90 --build-timeout 900 \
-                $(config_args "$c") "${extra[@]}" -- "${MUTANT_TESTS[@]}" 2>&1 | tee -a "$dir/log" | grep -E '^(MISSED|TIMEOUT)|mutants tested' >&2 || true
+                $(config_args "$c") "${only[@]}" "${extra[@]}" -- "${MUTANT_TESTS[@]}" 2>&1 | tee -a "$dir/log" | grep -E '^(MISSED|TIMEOUT)|mutants tested' >&2 || true
         done
     done
     python3 scripts/evidence/mutants.py "$WORK/mutants" "$OUT/mutants.json" docs/evidence/equivalent_mutants.toml

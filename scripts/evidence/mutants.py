@@ -16,14 +16,16 @@ that build it.
 Earlier results: a file with no run in RUNS_DIR keeps its figures, its runs
 and its survivors from the OUT_JSON written before (runs are scratch; the
 committed result is not lost when one file is mutated again). A file whose
-runs tested only its recorded survivors (`--re` of their lines) keeps its
-recorded figures too, with each survivor updated: caught when a run now
+runs are all survivor runs (folders named <file>-<configuration>-survivors,
+made by `scripts/evidence.sh mutants --survivors`, which tests only the
+recorded survivors) keeps its recorded figures (its base, from its last
+complete run) too, with each survivor updated: caught when a run now
 catches it, unviable when every configuration that builds it found it so,
-else still missed. Any other run of a file replaces its figures.
+else still missed. A complete run of a file replaces its figures.
 
   mutants.py RUNS_DIR OUT_JSON EQUIV_TOML
+  mutants.py --survivor-re FILE OUT_JSON   (the --re of a survivor run)
 """
-import datetime
 import json
 import pathlib
 import re
@@ -120,7 +122,23 @@ def config_of(run, configs):
     return max(names, key=len) if names else None
 
 
+def survivor_re(file, out_json):
+    """A cargo-mutants --re for the survivors in the base of `file` (any
+    column: the text and line name a mutant)."""
+    result = json.loads(pathlib.Path(out_json).read_text())
+    base = result.get("base", {}).get(file, {}).get("survivors")
+    entries = base if base is not None else [e for e in result["survivors"] if e["file"] == file]
+
+    def esc(text):
+        return re.sub(r"([\\.^$|?*+()\[\]{}])", r"\\\1", text)
+
+    return "|".join(sorted({f"^{esc(file)}:{e['line']}:[0-9]+: {esc(e['mutant'])}$" for e in entries}))
+
+
 def main():
+    if sys.argv[1] == "--survivor-re":
+        print(survivor_re(sys.argv[2], sys.argv[3]))
+        return
     runs, out_json, equiv_path = sys.argv[1:4]
     # (file, mutant text) -> [(line or None, argument)]: an entry with a
     # line explains only the mutant at that line (the text names the
@@ -137,10 +155,11 @@ def main():
     cfg_sets = {f.stem.removeprefix("cfg-"): set(f.read_text().split())
                 for f in base.glob("cfg-*.txt")}
     # Per mutant: the best outcome in each configuration (and its run).
-    records, configs, not_built = {}, {}, set()
+    records, configs, not_built, full_run = {}, {}, set(), set()
     outs = sorted(base.glob("*/mutants.out")) + sorted(base.glob("*/mutants.out.old")) + sorted(base.glob("*/runs/*"))
     for d in outs:
         run = d.parent.name if d.name.startswith("mutants.out") else d.parent.parent.name
+        survivor_run = run.endswith("-survivors")
         conf = config_of(run, cfg_sets) or run
         configs.setdefault(run, {})
         for outcome in RANK:
@@ -149,6 +168,8 @@ def main():
                 k = key(line)
                 if k is None:
                     continue
+                if not survivor_run:
+                    full_run.add(k[0])
                 configs[run][outcome] = configs[run].get(outcome, 0) + 1
                 if outcome == "missed" and conf in cfg_sets and not built(k[0], k[2], cfg_sets[conf]):
                     not_built.add((k, conf))
@@ -173,10 +194,22 @@ def main():
         bases.setdefault(file, {"figures": figures,
                                 "survivors": [e for e in before.get("survivors", []) if e["file"] == file]})
     new_files = {k[0] for k in mutants} | {k[0] for k, _ in not_built}
-    # Files whose runs tested survivors of their base only: updated.
-    partial = {f for f in new_files if f in bases and all(
-        (k[1], k[2]) in {(e["mutant"], e["line"]) for e in bases[f]["survivors"]}
-        for k in list(mutants) + [k for k, _ in not_built] if k[0] == f)}
+    # Files whose runs are all survivor runs (folders named ...-survivors,
+    # `scripts/evidence.sh mutants --survivors`): their base is updated. A
+    # survivor run may hold a few other mutants (cargo-mutants does not
+    # filter every kind by --re); they are left as the base counts them.
+    partial = {f for f in new_files if f in bases and f not in full_run}
+
+    def in_base(k):
+        return (k[1], k[2]) in {(e["mutant"], e["line"]) for e in bases[k[0]]["survivors"]}
+
+    strays = []
+    for k, m in sorted(mutants.items()):
+        if k[0] in partial and not in_base(k):
+            print(f"  note: {k[0]}:{k[2]}: {k[1]}: {m['outcome']}, not a survivor: left as recorded")
+            if m["outcome"] == "missed":
+                strays.append({"file": k[0], "line": k[2], "mutant": k[1],
+                               "argument": None, "note": "missed in a survivor run, not in the base: run the whole file"})
     per_file, survivors, unexplained = {}, [], []
 
     def survive(entry):
@@ -217,10 +250,9 @@ def main():
             print(f"  updated: {file}:{entry['line']}: {entry['mutant']}: {best}")
         per_file[file] = s
 
-    stamp = datetime.date.today().isoformat()
-    for run, counts in list(configs.items()):
-        if any(run.startswith(run_name(f) + "-") for f in partial):
-            configs[f"{run} (survivors, {stamp})"] = configs.pop(run)
+    for entry in strays:
+        survivors.append(entry)
+        unexplained.append(entry)
     kept = sorted(set(before.get("files", {})) - set(per_file))
     for file in kept:
         per_file[file] = before["files"][file]
@@ -234,7 +266,7 @@ def main():
     renewed = tuple(run_name(f) + "-" for f in partial)
     for run, counts in before.get("runs", {}).items():
         # A survivor run replaces the one before it.
-        if run.startswith(renewed) and "(survivors" in run:
+        if run.startswith(renewed) and run.endswith("-survivors"):
             continue
         if run not in configs and run.startswith(stems):
             configs[run] = counts
@@ -242,7 +274,7 @@ def main():
     # follows the arguments listed now.
     for file in kept + sorted(partial):
         s = per_file[file] = dict(per_file[file])
-        mine = [e for e in survivors if e["file"] == file]
+        mine = [e for e in survivors if e["file"] == file and "note" not in e]
         assert s["missed"] + s["equivalent"] == len(mine), f"{file}: survivors and figures differ"
         s["equivalent"] = sum(e["argument"] is not None for e in mine)
         s["missed"] = len(mine) - s["equivalent"]

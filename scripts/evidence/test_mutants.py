@@ -66,8 +66,8 @@ class CombineTest(unittest.TestCase):
     def tearDown(self):
         self.dir.cleanup()
 
-    def outcome(self, config, outcome, *lines):
-        d = self.runs / f"x-{config}" / "mutants.out"
+    def outcome(self, config, outcome, *lines, kind=""):
+        d = self.runs / f"x-{config}{kind}" / "mutants.out"
         d.mkdir(parents=True, exist_ok=True)
         (d / f"{outcome}.txt").write_text("".join(line + "\n" for line in lines))
 
@@ -102,20 +102,50 @@ class CombineTest(unittest.TestCase):
                                    "mutant": "replace Srdo::fields -> CopResult with Default::default()",
                                    "argument": None}]}
         self.out.write_text(json.dumps(recorded))
-        self.outcome("default", "caught", POLL)
-        self.outcome("default", "missed", FIELDS)
+        self.outcome("default", "caught", POLL, kind="-survivors")
+        self.outcome("default", "missed", FIELDS, kind="-survivors")
         rc, result = self.combine()
         # The mutant of `fields` ran only where it is compiled out: still a
         # survivor (variant-a, which builds it, did not run).
         self.assertEqual(rc, 1)
         self.assertEqual(result["files"]["src/x.rs"],
                          {"caught": 41, "timeout": 0, "missed": 1, "unviable": 5, "equivalent": 0})
-        self.assertIn("x-default", result["runs"])
-        self.outcome("variant-a", "unviable", FIELDS)
+        self.assertEqual(sorted(result["runs"]), ["x-default", "x-default-survivors"])
+        self.outcome("variant-a", "unviable", FIELDS, kind="-survivors")
         rc, result = self.combine()
         self.assertEqual(rc, 0)
         self.assertEqual(result["files"]["src/x.rs"],
                          {"caught": 41, "timeout": 0, "missed": 0, "unviable": 6, "equivalent": 0})
+
+    def test_a_caught_mutant_outside_the_survivors_is_left_as_recorded(self):
+        recorded = {"runs": {}, "files": {"src/x.rs": {"caught": 10, "timeout": 0, "missed": 1, "unviable": 0,
+                                                       "equivalent": 0}},
+                    "survivors": [{"file": "src/x.rs", "line": 3, "mutant": "replace && with || in Srdo::poll",
+                                   "argument": None}]}
+        self.out.write_text(json.dumps(recorded))
+        self.outcome("default", "caught", POLL, "src/x.rs:2:5: replace Srdo::poll -> bool with true",
+                     kind="-survivors")
+        rc, result = self.combine()
+        self.assertEqual(rc, 0)
+        self.assertEqual(result["files"]["src/x.rs"]["caught"], 11)
+        # Missed there, it is a survivor the base does not know: fails.
+        self.outcome("default", "missed", "src/x.rs:2:5: replace Srdo::poll -> bool with false",
+                     kind="-survivors")
+        rc, result = self.combine()
+        self.assertEqual(rc, 1)
+        self.assertEqual(result["files"]["src/x.rs"]["caught"], 11)
+
+    def test_a_complete_run_replaces_the_figures(self):
+        recorded = {"runs": {}, "files": {"src/x.rs": {"caught": 10, "timeout": 0, "missed": 1, "unviable": 0,
+                                                       "equivalent": 0}},
+                    "survivors": [{"file": "src/x.rs", "line": 3, "mutant": "replace && with || in Srdo::poll",
+                                   "argument": None}]}
+        self.out.write_text(json.dumps(recorded))
+        self.outcome("default", "caught", POLL)
+        rc, result = self.combine()
+        self.assertEqual(rc, 0)
+        self.assertEqual(result["files"]["src/x.rs"]["caught"], 1)
+        self.assertNotIn("base", result)
 
     def test_an_equivalent_entry_with_a_line_explains_that_line_only(self):
         other = "src/x.rs:2:20: replace && with || in Srdo::poll"
