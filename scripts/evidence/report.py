@@ -121,7 +121,8 @@ def main():
                f"({mut['score']:.1f} %; {mut['score_without_equivalent']:.1f} % of the non-equivalent ones), "
                f"{t['equivalent']} survivors argued equivalent "
                f"(docs/evidence/equivalent_mutants.toml), {t['unviable']} unviable. Runs (file-configuration): "
-               + ", ".join(f"`{r}`" for r in sorted(mut["runs"])) + ".", "",
+               + ", ".join(f"`{r}`" for r in sorted(mut["runs"])) + " (a `-survivors` run tested only the "
+               "survivors of the runs before it, after new tests: `scripts/evidence.sh mutants --survivors`).", "",
                "![mutants](mutants.png)", "", "| file | caught | timeout | missed | equivalent | unviable |",
                "|---|---|---|---|---|---|"]
         for f, s in sorted(mut["files"].items()):
