@@ -92,6 +92,14 @@ pub extern "C" fn SrdoSend(wSrdoCommuIndex_p: WORD) -> tCopKernel {
 pub unsafe extern "C" fn CcmCheckSrdoConfig(pwCommuIndex_p: *mut WORD) -> tCopKernel {
     // SAFETY: the caller's contract (NULL or a writable WORD).
     let out = c_try!(unsafe { ptr::out(pwCommuIndex_p) });
+    check_config(out)
+}
+
+/// `CcmCheckSrdoConfig` once its pointer is checked. The C entry points
+/// that take pointers are `unsafe fn`s, which cargo-mutants does not
+/// mutate: each converts its pointers and hands over to a safe function
+/// like this one, which holds the logic.
+fn check_config(out: Out<WORD>) -> tCopKernel {
     match global::with(|i| i.stack.srdo().check_config(i.stack.od())) {
         Ok(Ok(())) => 0,
         Ok(Err((e, idx))) => {
@@ -145,9 +153,14 @@ pub unsafe extern "C" fn CcmGetSrdoState(
 ) -> tCopKernel {
     // SAFETY: the caller's contract (NULL or a writable byte).
     let out = c_try!(unsafe { ptr::out(pbSrdoState_p) });
+    get_state(out, wSrdoCommuIndex_p)
+}
+
+/// `CcmGetSrdoState` once its pointer is checked.
+fn get_state(out: Out<BYTE>, idx: WORD) -> tCopKernel {
     let mut state = 0;
-    if !global::srdo_status(wSrdoCommuIndex_p, |s| state = *s) {
-        let r = global::with_srdo_status(wSrdoCommuIndex_p, |s| state = *s);
+    if !global::srdo_status(idx, |s| state = *s) {
+        let r = global::with_srdo_status(idx, |s| state = *s);
         if r != CopKernel::Successful.code() {
             return r;
         }
@@ -246,43 +259,50 @@ pub unsafe extern "C" fn CcmGetSrdoParam(
     pSrdoCommuParam_p: *mut tSrdoCommuParam,
     pSrdoMappParam_p: *mut tSrdoMappParam,
 ) -> tCopKernel {
-    let exists = global::with(|i| i.stack.srdo().get_state(wSrdoCommuIndex_p).map(|_| ()));
+    // SAFETY: the caller's contract (each NULL, skipped, or writable).
+    let (commu, mapp) = unsafe { (ptr::out(pSrdoCommuParam_p), ptr::out(pSrdoMappParam_p)) };
+    get_param(wSrdoCommuIndex_p, commu.ok(), mapp.ok())
+}
+
+/// `CcmGetSrdoParam` once its pointers are checked (`None`: NULL).
+fn get_param(
+    idx: WORD,
+    commu_out: Option<Out<tSrdoCommuParam>>,
+    mapp_out: Option<Out<tSrdoMappParam>>,
+) -> tCopKernel {
+    let exists = global::with(|i| i.stack.srdo().get_state(idx).map(|_| ()));
     if let Err(e) = exists.and_then(|r| r) {
         return e.code();
     }
     #[cfg(srdo_static_mapping)]
-    if !pSrdoMappParam_p.is_null() {
+    if mapp_out.is_some() {
         return CopKernel::InvalidParam.code();
     }
     // Both results first, then the writes: a refusal leaves the caller's
     // structures as they were.
-    let commu = if pSrdoCommuParam_p.is_null() {
-        None
-    } else {
-        match global::with(|i| i.stack.srdo().commu_param(i.stack.od(), wSrdoCommuIndex_p)) {
+    let commu = match commu_out {
+        None => None,
+        Some(_) => match global::with(|i| i.stack.srdo().commu_param(i.stack.od(), idx)) {
             Ok(Ok(c)) => Some(tSrdoCommuParam {
                 m_bDirection: c.direction,
                 m_wSct: c.sct_ms,
             }),
             Ok(Err(e)) | Err(e) => return e.code(),
-        }
+        },
     };
     #[cfg(not(srdo_static_mapping))]
-    let mapp = if pSrdoMappParam_p.is_null() {
-        None
-    } else {
-        match mapp_struct(wSrdoCommuIndex_p) {
+    let mapp = match mapp_out {
+        None => None,
+        Some(_) => match mapp_struct(idx) {
             Ok(m) => Some(m),
             Err(e) => return e.code(),
-        }
+        },
     };
-    // SAFETY: the caller's contract (NULL, skipped, or writable).
-    if let (Ok(out), Some(c)) = (unsafe { ptr::out(pSrdoCommuParam_p) }, commu) {
+    if let (Some(out), Some(c)) = (commu_out, commu) {
         out.set(c);
     }
     #[cfg(not(srdo_static_mapping))]
-    // SAFETY: as above.
-    if let (Ok(out), Some(m)) = (unsafe { ptr::out(pSrdoMappParam_p) }, mapp) {
+    if let (Some(out), Some(m)) = (mapp_out, mapp) {
         out.set(m);
     }
     0
@@ -329,13 +349,12 @@ pub unsafe extern "C" fn SrdoGetMappParam(
 pub unsafe extern "C" fn CcmCalcSrdoCrc(wCommuIndex_p: WORD, pwCrc_p: *mut WORD) -> tCopKernel {
     // SAFETY: the caller's contract (NULL or a writable WORD).
     let out = c_try!(unsafe { ptr::out(pwCrc_p) });
-    match global::with(|i| i.stack.srdo().calc_crc(i.stack.od(), wCommuIndex_p)) {
-        Ok(Ok(crc)) => {
-            out.set(crc);
-            0
-        }
-        Ok(Err(e)) | Err(e) => e.code(),
-    }
+    calc_crc(wCommuIndex_p, out)
+}
+
+/// `CcmCalcSrdoCrc` once its pointer is checked.
+fn calc_crc(idx: WORD, out: Out<WORD>) -> tCopKernel {
+    out.give(global::with(|i| i.stack.srdo().calc_crc(i.stack.od(), idx)))
 }
 
 /// `SrdoCalcSrdoCrc`: as `CcmCalcSrdoCrc`; `pSrdoEntry_p` must be NULL
@@ -349,11 +368,19 @@ pub unsafe extern "C" fn SrdoCalcSrdoCrc(
     pSrdoEntry_p: *mut c_void,
     pwCrc_p: *mut WORD,
 ) -> tCopKernel {
-    if !pSrdoEntry_p.is_null() {
+    // SAFETY: the caller's contract (NULL or a writable WORD); the entry
+    // pointer is only compared with NULL.
+    let out = c_try!(unsafe { ptr::out(pwCrc_p) });
+    calc_crc_without_entry(wCommuIndex_p, pSrdoEntry_p.is_null(), out)
+}
+
+/// `SrdoCalcSrdoCrc` once its pointers are checked: kCopInvalidParam
+/// unless `pSrdoEntry_p` was NULL.
+fn calc_crc_without_entry(idx: WORD, no_entry: bool, out: Out<WORD>) -> tCopKernel {
+    if !no_entry {
         return CopKernel::InvalidParam.code();
     }
-    // SAFETY: same contract.
-    unsafe { CcmCalcSrdoCrc(wCommuIndex_p, pwCrc_p) }
+    calc_crc(idx, out)
 }
 
 /// `CcmStaticDefineSrdoVarFields` (only with `SRDO_USE_STATIC_MAPPING`):
@@ -424,6 +451,11 @@ pub unsafe extern "C" fn SrdoStaticDefineVarFields(
 pub unsafe extern "C" fn SrdoInit(pInitParam_p: *const tSrdoInitParam) -> tCopKernel {
     // SAFETY: the caller's contract (NULL or a valid tSrdoInitParam).
     let p = c_try!(unsafe { ptr::read(pInitParam_p) });
+    init(&p)
+}
+
+/// `SrdoInit` with a copy of its parameters.
+fn init(p: &tSrdoInitParam) -> tCopKernel {
     if p.m_bGranularity != 0 && p.m_bGranularity != crate::config::SRDO_GRANULARITY {
         return CopKernel::SrdoGranularityMismatch.code();
     }
