@@ -71,6 +71,12 @@ class CombineTest(unittest.TestCase):
         d.mkdir(parents=True, exist_ok=True)
         (d / f"{outcome}.txt").write_text("".join(line + "\n" for line in lines))
 
+    def record_one_survivor(self):
+        """A result before: 10 caught, the && of `poll` missed."""
+        survivor = {"file": "src/x.rs", "line": 3, "mutant": "replace && with || in Srdo::poll", "argument": None}
+        figures = {"caught": 10, "timeout": 0, "missed": 1, "unviable": 0, "equivalent": 0}
+        self.out.write_text(json.dumps({"runs": {}, "files": {"src/x.rs": figures}, "survivors": [survivor]}))
+
     def combine(self):
         p = subprocess.run([sys.executable, str(SCRIPT), str(self.runs), str(self.out), str(self.equiv)],
                            cwd=self.root, capture_output=True, text=True)
@@ -118,11 +124,7 @@ class CombineTest(unittest.TestCase):
                          {"caught": 41, "timeout": 0, "missed": 0, "unviable": 6, "equivalent": 0})
 
     def test_a_caught_mutant_outside_the_survivors_is_left_as_recorded(self):
-        recorded = {"runs": {}, "files": {"src/x.rs": {"caught": 10, "timeout": 0, "missed": 1, "unviable": 0,
-                                                       "equivalent": 0}},
-                    "survivors": [{"file": "src/x.rs", "line": 3, "mutant": "replace && with || in Srdo::poll",
-                                   "argument": None}]}
-        self.out.write_text(json.dumps(recorded))
+        self.record_one_survivor()
         self.outcome("default", "caught", POLL, "src/x.rs:2:5: replace Srdo::poll -> bool with true",
                      kind="-survivors")
         rc, result = self.combine()
@@ -136,11 +138,7 @@ class CombineTest(unittest.TestCase):
         self.assertEqual(result["files"]["src/x.rs"]["caught"], 11)
 
     def test_a_complete_run_replaces_the_figures(self):
-        recorded = {"runs": {}, "files": {"src/x.rs": {"caught": 10, "timeout": 0, "missed": 1, "unviable": 0,
-                                                       "equivalent": 0}},
-                    "survivors": [{"file": "src/x.rs", "line": 3, "mutant": "replace && with || in Srdo::poll",
-                                   "argument": None}]}
-        self.out.write_text(json.dumps(recorded))
+        self.record_one_survivor()
         self.outcome("default", "caught", POLL)
         rc, result = self.combine()
         self.assertEqual(rc, 0)
