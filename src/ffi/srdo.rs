@@ -99,7 +99,6 @@ pub unsafe extern "C" fn CcmCheckSrdoConfig(pwCommuIndex_p: *mut WORD) -> tCopKe
 /// that take pointers are `unsafe fn`s, which cargo-mutants does not
 /// mutate: each converts its pointers and hands over to a safe function
 /// like this one, which holds the logic.
-#[inline(always)]
 fn check_config(out: Out<WORD>) -> tCopKernel {
     match global::with(|i| i.stack.srdo().check_config(i.stack.od())) {
         Ok(Ok(())) => 0,
@@ -158,7 +157,6 @@ pub unsafe extern "C" fn CcmGetSrdoState(
 }
 
 /// `CcmGetSrdoState` once its pointer is checked.
-#[inline(always)]
 fn get_state(out: Out<BYTE>, idx: WORD) -> tCopKernel {
     let mut state = 0;
     if !global::srdo_status(idx, |s| state = *s) {
@@ -267,7 +265,6 @@ pub unsafe extern "C" fn CcmGetSrdoParam(
 }
 
 /// `CcmGetSrdoParam` once its pointers are checked (`None`: NULL).
-#[inline(always)]
 fn get_param(
     idx: WORD,
     commu_out: Option<Out<tSrdoCommuParam>>,
@@ -356,7 +353,6 @@ pub unsafe extern "C" fn CcmCalcSrdoCrc(wCommuIndex_p: WORD, pwCrc_p: *mut WORD)
 }
 
 /// `CcmCalcSrdoCrc` once its pointer is checked.
-#[inline(always)]
 fn calc_crc(idx: WORD, out: Out<WORD>) -> tCopKernel {
     out.give(global::with(|i| i.stack.srdo().calc_crc(i.stack.od(), idx)))
 }
@@ -380,7 +376,6 @@ pub unsafe extern "C" fn SrdoCalcSrdoCrc(
 
 /// `SrdoCalcSrdoCrc` once its pointers are checked: kCopInvalidParam
 /// unless `pSrdoEntry_p` was NULL.
-#[inline(always)]
 fn calc_crc_without_entry(idx: WORD, no_entry: bool, out: Out<WORD>) -> tCopKernel {
     if !no_entry {
         return CopKernel::InvalidParam.code();
@@ -460,7 +455,6 @@ pub unsafe extern "C" fn SrdoInit(pInitParam_p: *const tSrdoInitParam) -> tCopKe
 }
 
 /// `SrdoInit` with a copy of its parameters.
-#[inline(always)]
 fn init(p: &tSrdoInitParam) -> tCopKernel {
     if p.m_bGranularity != 0 && p.m_bGranularity != crate::config::SRDO_GRANULARITY {
         return CopKernel::SrdoGranularityMismatch.code();
