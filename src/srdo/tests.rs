@@ -2011,6 +2011,91 @@ fn gfc_is_reported_only_pre_operational_and_operational() {
     assert_eq!(srdo.gfc_ignored(), if gfc { 3 } else { 0 });
 }
 
+/// The default builders behind the macros are const functions that the
+/// dictionaries' statics run at compile time; run at run time (inputs the
+/// compiler cannot know) they give the statics' bytes: the values in the
+/// CPU's byte order, the entries after the count, the rest of the entry
+/// bytes 0.
+// req: M-2.10.1-MACROS
+#[test]
+fn srdo_object_defaults_at_run_time_equal_the_statics() {
+    use super::objects::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
+    use core::hint::black_box;
+    use std::sync::OnceLock;
+    static VARS: CommuVars = CommuVars::new();
+    static MVARS: MappVars = MappVars::new();
+    static COMMU: CommuDefaults = CommuDefaults::new(1, 30, 15, 0x101, 0x102);
+    static MAPP: MappDefaults = MappDefaults::new(&[0x6200_0108, 0x6300_0108]);
+    static COMMU_RUN: OnceLock<CommuDefaults> = OnceLock::new();
+    static MAPP_RUN: OnceLock<MappDefaults> = OnceLock::new();
+    static NONE_RUN: OnceLock<MappDefaults> = OnceLock::new();
+    let defaults = |subs: &[ObdSubEntry]| -> Vec<Option<Vec<u8>>> {
+        subs.iter()
+            .map(|s| s.default_value().map(<[u8]>::to_vec))
+            .collect()
+    };
+    let c = COMMU_RUN.get_or_init(|| {
+        CommuDefaults::new(black_box(1), black_box(30), black_box(15), 0x101, 0x102)
+    });
+    let run = defaults(&commu_subs(&VARS, c));
+    assert_eq!(run, defaults(&commu_subs(&VARS, &COMMU)));
+    assert_eq!(run[2], Some(30u16.to_ne_bytes().to_vec()));
+    assert_eq!(run[6], Some(0x102u32.to_ne_bytes().to_vec()));
+    let m = MAPP_RUN.get_or_init(|| MappDefaults::new(black_box(&[0x6200_0108, 0x6300_0108])));
+    let run = defaults(&mapp_subs(&MVARS, m));
+    assert_eq!(run, defaults(&mapp_subs(&MVARS, &MAPP)));
+    assert_eq!(run[0], Some(vec![2]));
+    assert_eq!(run[1], Some(0x6200_0108u32.to_ne_bytes().to_vec()));
+    assert_eq!(run[2], Some(0x6300_0108u32.to_ne_bytes().to_vec()));
+    assert!(
+        run[3..].iter().all(|d| d.as_deref() == Some(&[0; 4][..])),
+        "{run:?}"
+    );
+    let none = NONE_RUN.get_or_init(|| MappDefaults::new(black_box(&[])));
+    let run = defaults(&mapp_subs(&MVARS, none));
+    assert_eq!(run[0], Some(vec![0]));
+    assert!(
+        run[1..].iter().all(|d| d.as_deref() == Some(&[0; 4][..])),
+        "{run:?}"
+    );
+}
+
+/// The SRDO write hook (manual 2.8.2: the SRDO objects are written only
+/// outside OPERATIONAL) decides only for the SRDO objects it found: a write
+/// to another object passes it in every state, while the same write to an
+/// SRDO object is refused in OPERATIONAL.
+#[test]
+fn write_hook_decides_only_for_srdo_objects() {
+    let (_g, od, srdo) = setup();
+    let stage = |index: u16, sub: u8, value: &[u8]| {
+        let obj = od.find(index, sub).unwrap();
+        let staged = od.stage(&obj, crate::od::ByteOrder::Wire, value).unwrap();
+        (obj, staged)
+    };
+    let (other, v) = stage(0x6201, 1, &[1, 0]);
+    for state in [
+        NmtState::PreOperational,
+        NmtState::Operational,
+        NmtState::Stopped,
+    ] {
+        assert_eq!(
+            srdo.check_write(&od, &other, &v, state),
+            Ok(()),
+            "{state:?}"
+        );
+    }
+    let (sct, v) = stage(0x1301, 2, &[30, 0]);
+    assert_eq!(
+        srdo.check_write(&od, &sct, &v, NmtState::PreOperational),
+        Ok(())
+    );
+    assert_eq!(
+        srdo.check_write(&od, &sct, &v, NmtState::Operational)
+            .map_err(|e| e.kernel),
+        Err(CopKernel::SrdoNmtError)
+    );
+}
+
 /// The subindex tables of the `OBD_CREATE_SRDO_*` equivalents: the macros'
 /// parameters as manual 2.10.1 describes them, the objects as
 /// SAFETY_BEHAVIOUR.md section 1 and the table of src/srdo/objects.rs lay
