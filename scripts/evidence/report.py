@@ -25,11 +25,14 @@ def pct(a, b):
 
 def core_figures(cov):
     """The totals without src/srdo/objects.rs, whose macro_rules! bodies are
-    counted at their expansion sites."""
+    counted at their expansion sites (nothing when that file is covered)."""
+    o = cov.get("src/srdo/objects.rs")
+    if o is None or (o["lines_covered"], o["branches_covered"]) == (o["lines"], o["branches"]):
+        return ""
     fs = [f for f in cov if f not in ("total", "unexplained", "src/srdo/objects.rs")]
     lc, ln = sum(cov[f]["lines_covered"] for f in fs), sum(cov[f]["lines"] for f in fs)
     bc, bn = sum(cov[f]["branches_covered"] for f in fs), sum(cov[f]["branches"] for f in fs)
-    return (f"without `src/srdo/objects.rs` (macro bodies) lines {lc}/{ln} ({pct(lc, ln):.1f} %), "
+    return (f"; without `src/srdo/objects.rs` (macro bodies) lines {lc}/{ln} ({pct(lc, ln):.1f} %), "
             f"branches {bc}/{bn} ({pct(bc, bn):.1f} %)")
 
 
@@ -101,7 +104,7 @@ def main():
         md += [f"Lines {t['lines_covered']}/{t['lines']} ({pct(t['lines_covered'], t['lines']):.1f} %), "
                f"branches {t['branches_covered']}/{t['branches']} ({pct(t['branches_covered'], t['branches']):.1f} %), "
                "merged over the three switch configurations of `scripts/test.sh rust` (Rust tests) and the C tests "
-               "(CTest, linked against the instrumented library); "
+               "(CTest, linked against the instrumented library)"
                + core_figures(cov) + ". "
                "Every uncovered line and branch: [uncovered.md](uncovered.md).", "",
                "![coverage](coverage.png)", "", "| file | lines | branches |", "|---|---|---|"]
