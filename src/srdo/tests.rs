@@ -2011,55 +2011,6 @@ fn gfc_is_reported_only_pre_operational_and_operational() {
     assert_eq!(srdo.gfc_ignored(), if gfc { 3 } else { 0 });
 }
 
-/// The default builders behind the macros are const functions that the
-/// dictionaries' statics run at compile time; run at run time (inputs the
-/// compiler cannot know) they give the statics' bytes: the values in the
-/// CPU's byte order, the entries after the count, the rest of the entry
-/// bytes 0.
-// req: M-2.10.1-MACROS
-#[test]
-fn srdo_object_defaults_at_run_time_equal_the_statics() {
-    use super::objects::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
-    use core::hint::black_box;
-    use std::sync::OnceLock;
-    static VARS: CommuVars = CommuVars::new();
-    static MVARS: MappVars = MappVars::new();
-    static COMMU: CommuDefaults = CommuDefaults::new(1, 30, 15, 0x101, 0x102);
-    static MAPP: MappDefaults = MappDefaults::new(&[0x6200_0108, 0x6300_0108]);
-    static COMMU_RUN: OnceLock<CommuDefaults> = OnceLock::new();
-    static MAPP_RUN: OnceLock<MappDefaults> = OnceLock::new();
-    static NONE_RUN: OnceLock<MappDefaults> = OnceLock::new();
-    let defaults = |subs: &[ObdSubEntry]| -> Vec<Option<Vec<u8>>> {
-        subs.iter()
-            .map(|s| s.default_value().map(<[u8]>::to_vec))
-            .collect()
-    };
-    let c = COMMU_RUN.get_or_init(|| {
-        CommuDefaults::new(black_box(1), black_box(30), black_box(15), 0x101, 0x102)
-    });
-    let run = defaults(&commu_subs(&VARS, c));
-    assert_eq!(run, defaults(&commu_subs(&VARS, &COMMU)));
-    assert_eq!(run[2], Some(30u16.to_ne_bytes().to_vec()));
-    assert_eq!(run[6], Some(0x102u32.to_ne_bytes().to_vec()));
-    let m = MAPP_RUN.get_or_init(|| MappDefaults::new(black_box(&[0x6200_0108, 0x6300_0108])));
-    let run = defaults(&mapp_subs(&MVARS, m));
-    assert_eq!(run, defaults(&mapp_subs(&MVARS, &MAPP)));
-    assert_eq!(run[0], Some(vec![2]));
-    assert_eq!(run[1], Some(0x6200_0108u32.to_ne_bytes().to_vec()));
-    assert_eq!(run[2], Some(0x6300_0108u32.to_ne_bytes().to_vec()));
-    assert!(
-        run[3..].iter().all(|d| d.as_deref() == Some(&[0; 4][..])),
-        "{run:?}"
-    );
-    let none = NONE_RUN.get_or_init(|| MappDefaults::new(black_box(&[])));
-    let run = defaults(&mapp_subs(&MVARS, none));
-    assert_eq!(run[0], Some(vec![0]));
-    assert!(
-        run[1..].iter().all(|d| d.as_deref() == Some(&[0; 4][..])),
-        "{run:?}"
-    );
-}
-
 /// The SRDO write hook (manual 2.8.2: the SRDO objects are written only
 /// outside OPERATIONAL) decides only for the SRDO objects it found: a write
 /// to another object passes it in every state, while the same write to an
@@ -2101,12 +2052,16 @@ fn write_hook_decides_only_for_srdo_objects() {
 /// SAFETY_BEHAVIOUR.md section 1 and the table of src/srdo/objects.rs lay
 /// them out (sub 4 and, with static mapping, the mapping constant). The
 /// dictionaries build these tables at compile time; here they are built at
-/// run time from the same functions.
+/// run time from the same functions, and the default builders (const
+/// functions the statics run at compile time) also run at run time, with
+/// inputs the compiler cannot know, giving the same defaults.
 // req: M-2.10.1-MACROS
 #[test]
 fn srdo_object_tables_as_the_macros_declare_them() {
     use super::objects::*;
     use crate::config::SRDO_USE_STATIC_MAPPING;
+    use core::hint::black_box;
+    use std::sync::OnceLock;
     // Statics, as the dictionaries declare them (no leaked heap, which Miri
     // would report).
     static VARS: CommuVars = CommuVars::new();
@@ -2116,6 +2071,9 @@ fn srdo_object_tables_as_the_macros_declare_them() {
     static BYTE: [AtomicU8; 1] = decl::zeroed::<1>();
     static CRC_VARS: [AtomicU8; 6] = decl::zeroed::<6>();
     static CRC_DEFAULTS: [u8; 6] = crc_defaults::<6>(&[0x1234, 0xABCD, 0]);
+    static COMMU_RUN: OnceLock<CommuDefaults> = OnceLock::new();
+    static MAPP_RUN: OnceLock<MappDefaults> = OnceLock::new();
+    static EMPTY_RUN: OnceLock<MappDefaults> = OnceLock::new();
     type Row = (u8, DataType, Access, Option<Vec<u8>>);
     let rows = |subs: &[ObdSubEntry]| -> Vec<Row> {
         subs.iter()
@@ -2143,6 +2101,14 @@ fn srdo_object_tables_as_the_macros_declare_them() {
             (6, u32_, Access::SRW, ne32(0x102)),
         ]
     );
+    let run = COMMU_RUN.get_or_init(|| {
+        CommuDefaults::new(black_box(1), black_box(30), black_box(15), 0x101, 0x102)
+    });
+    assert_eq!(
+        rows(&commu_subs(vars, run)),
+        rows(&commu),
+        "built at run time"
+    );
     let var_of = |s: &ObdSubEntry| s.ram_var(0).map(<[AtomicU8]>::as_ptr);
     assert_eq!(var_of(&commu[1]), Some(vars.direction.as_ptr()));
     assert_eq!(var_of(&commu[2]), Some(vars.sct.as_ptr()));
@@ -2168,6 +2134,15 @@ fn srdo_object_tables_as_the_macros_declare_them() {
         (3..=crate::config::SRDO_MAX_MAPPENTRIES as u8).map(|sub| (sub, u32_, access, ne32(0))),
     );
     assert_eq!(rows(&mapp), expected);
+    let run = MAPP_RUN.get_or_init(|| MappDefaults::new(black_box(&[0x6200_0108, 0x6300_0108])));
+    assert_eq!(rows(&mapp_subs(mvars, run)), expected, "built at run time");
+    // No entry: the count 0, every entry 0.
+    let empty = EMPTY_RUN.get_or_init(|| MappDefaults::new(black_box(&[])));
+    let mut expected = vec![(0, u8_, access, Some(vec![0]))];
+    expected.extend(
+        (1..=crate::config::SRDO_MAX_MAPPENTRIES as u8).map(|sub| (sub, u32_, access, ne32(0))),
+    );
+    assert_eq!(rows(&mapp_subs(mvars, empty)), expected);
     let mapped_var = (!SRDO_USE_STATIC_MAPPING).then(|| mvars.entries[4..].as_ptr());
     assert_eq!(var_of(&mapp[2]), mapped_var);
     // OBD_CREATE_SRDO_GFC_PARAM(), OBD_CREATE_SRDO_CFG_VALID(): U8 rw 0.
