@@ -203,18 +203,18 @@ pub extern "C" fn SrdoSetState(bSrdoState_p: BYTE, wSrdoCommuIndex_p: WORD) -> t
     CcmSetSrdoState(bSrdoState_p, wSrdoCommuIndex_p)
 }
 
+/// The communication parameters of `idx` as the C structure.
+fn commu_struct(idx: WORD) -> Result<tSrdoCommuParam, CopKernel> {
+    let c = global::with(|i| i.stack.srdo().commu_param(i.stack.od(), idx))??;
+    Ok(tSrdoCommuParam {
+        m_bDirection: c.direction,
+        m_wSct: c.sct_ms,
+    })
+}
+
 /// Writes the communication parameters of `idx` to `p`.
 fn get_commu(idx: WORD, p: Out<tSrdoCommuParam>) -> tCopKernel {
-    match global::with(|i| i.stack.srdo().commu_param(i.stack.od(), idx)) {
-        Ok(Ok(c)) => {
-            p.set(tSrdoCommuParam {
-                m_bDirection: c.direction,
-                m_wSct: c.sct_ms,
-            });
-            0
-        }
-        Ok(Err(e)) | Err(e) => e.code(),
-    }
+    p.give(Ok(commu_struct(idx)))
 }
 
 /// The mapping parameters of `idx` as the C structure.
@@ -234,13 +234,7 @@ fn mapp_struct(idx: WORD) -> Result<tSrdoMappParam, CopKernel> {
 /// Writes the mapping parameters of `idx` to `p`.
 #[cfg(not(srdo_static_mapping))]
 fn get_mapp(idx: WORD, p: Out<tSrdoMappParam>) -> tCopKernel {
-    match mapp_struct(idx) {
-        Ok(m) => {
-            p.set(m);
-            0
-        }
-        Err(e) => e.code(),
-    }
+    p.give(Ok(mapp_struct(idx)))
 }
 
 /// `CcmGetSrdoParam`: direction and SCT (`tSrdoCommuParam`) and, with
@@ -282,21 +276,12 @@ fn get_param(
     // structures as they were.
     let commu = match commu_out {
         None => None,
-        Some(_) => match global::with(|i| i.stack.srdo().commu_param(i.stack.od(), idx)) {
-            Ok(Ok(c)) => Some(tSrdoCommuParam {
-                m_bDirection: c.direction,
-                m_wSct: c.sct_ms,
-            }),
-            Ok(Err(e)) | Err(e) => return e.code(),
-        },
+        Some(_) => Some(c_try!(commu_struct(idx))),
     };
     #[cfg(not(srdo_static_mapping))]
     let mapp = match mapp_out {
         None => None,
-        Some(_) => match mapp_struct(idx) {
-            Ok(m) => Some(m),
-            Err(e) => return e.code(),
-        },
+        Some(_) => Some(c_try!(mapp_struct(idx))),
     };
     if let (Some(out), Some(c)) = (commu_out, commu) {
         out.set(c);
@@ -371,13 +356,13 @@ pub unsafe extern "C" fn SrdoCalcSrdoCrc(
     // SAFETY: the caller's contract (NULL or a writable WORD); the entry
     // pointer is only compared with NULL.
     let out = c_try!(unsafe { ptr::out(pwCrc_p) });
-    calc_crc_without_entry(wCommuIndex_p, pSrdoEntry_p.is_null(), out)
+    calc_crc_without_entry(wCommuIndex_p, !pSrdoEntry_p.is_null(), out)
 }
 
 /// `SrdoCalcSrdoCrc` once its pointers are checked: kCopInvalidParam
-/// unless `pSrdoEntry_p` was NULL.
-fn calc_crc_without_entry(idx: WORD, no_entry: bool, out: Out<WORD>) -> tCopKernel {
-    if !no_entry {
+/// when an entry pointer was given.
+fn calc_crc_without_entry(idx: WORD, entry_given: bool, out: Out<WORD>) -> tCopKernel {
+    if entry_given {
         return CopKernel::InvalidParam.code();
     }
     calc_crc(idx, out)
