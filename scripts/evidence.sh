@@ -153,8 +153,9 @@ cov_c_tests() {
 # MUTANT_CONFIGS (default: all three; a mutant in a function that a switch
 # compiles out builds there and changes nothing: mutants.py does not count it
 # in that configuration); the combined result keeps the best outcome per
-# mutant. A run limited to a file's recorded survivors (`-- --re` of their
-# lines) updates only those. The tests run are the
+# mutant. `mutants --survivors` tests only a file's recorded survivors
+# (folders <file>-<config>-survivors) and updates only those; any other run of
+# a file replaces its figures. The tests run are the
 # library's unit tests and the SRDO integration tests (MUTANT_TESTS), which
 # keeps a mutant at a build and well under a minute (the test command of a
 # mutant that makes a loop endless ends after 90 s, a timeout, which counts

@@ -200,8 +200,10 @@ def main():
     # filter every kind by --re); they are left as the base counts them.
     partial = {f for f in new_files if f in bases and f not in full_run}
 
+    base_keys = {f: {(e["mutant"], e["line"]) for e in bases[f]["survivors"]} for f in partial}
+
     def in_base(k):
-        return (k[1], k[2]) in {(e["mutant"], e["line"]) for e in bases[k[0]]["survivors"]}
+        return (k[1], k[2]) in base_keys[k[0]]
 
     strays = []
     for k, m in sorted(mutants.items()):
