@@ -5,6 +5,8 @@
 //! carrying network variables between two nodes; refusals that must leave
 //! the dictionary and the PDOs exactly as they were.
 
+mod common;
+
 use core::sync::atomic::{AtomicBool, AtomicU8, Ordering};
 
 use cop::ccm::{NmtCommand, Stack};
@@ -17,7 +19,7 @@ use cop::od::{Access, ByteOrder, DataType, ObdEntry, ObdSubEntry, ObjectDictiona
 use cop::pdo::PDO_MAX_MAPPENTRIES;
 use cop::pdo::decl::{CommuDefaults, CommuVars, MappDefaults, MappVars, commu_subs, mapp_subs};
 use cop::port::Ticks;
-use cop::sdo::client::{ClientParam, Direction, SdocState};
+use cop::sdo::client::{Direction, SdocState};
 use cop::sim::{SimBus, SimPort};
 use cop::wire::sdo::Multiplexer;
 
@@ -137,40 +139,58 @@ struct Node {
 
 impl Node {
     fn new(bus: &SimBus, od: ObjectDictionary, id: u8) -> Node {
-        let mut port = bus.attach(64);
-        let mut stack = Stack::new(od, id).unwrap();
-        while stack.drain(&mut port, bus.now()).is_some() {}
-        stack.connect().unwrap();
-        while stack.drain(&mut port, bus.now()).is_some() {}
+        let (port, stack) = common::attach(bus, od, id, 64);
         Node { stack, port }
+    }
+
+    /// A node with node-ID 1 on a bus of its own.
+    fn alone(od: ObjectDictionary) -> Node {
+        Node::new(&SimBus::new(), od, 1)
     }
 
     fn now(&self) -> Ticks {
         self.port.bus().now()
     }
 
-    fn build(
+    /// Runs the stack's pending work without taking frames; drops the
+    /// events.
+    fn drain(&mut self) {
+        let now = self.now();
+        while self.stack.drain(&mut self.port, now).is_some() {}
+    }
+
+    fn build<const N: usize>(
         &mut self,
-        pool: &'static DynPool<4096>,
+        pool: &'static DynPool<N>,
         c: &[u8],
         image: Option<&'static [AtomicU8]>,
     ) -> Result<cop::od::dynamic::BuildInfo, CopKernel> {
         let now = self.now();
         let r = pool.build(&mut self.stack, &mut self.port, now, c, image);
-        while self.stack.drain(&mut self.port, now).is_some() {}
+        self.drain();
         r
     }
 
-    fn destroy(&mut self, pool: &'static DynPool<4096>) {
-        let now = self.now();
-        pool.destroy(&mut self.stack, &mut self.port, now).unwrap();
-        while self.stack.drain(&mut self.port, now).is_some() {}
+    /// Builds `c`, expecting the refusal `code` that leaves the node as
+    /// `before` and `pool` free.
+    #[track_caller]
+    fn refused<const N: usize>(
+        &mut self,
+        pool: &'static DynPool<N>,
+        c: &[u8],
+        image: Option<&'static [AtomicU8]>,
+        code: CopKernel,
+        before: &Snapshot,
+    ) {
+        assert_eq!(self.build(pool, c, image), Err(code));
+        assert_eq!(&snapshot(&self.stack), before);
+        assert!(!pool.is_in_use());
     }
 
-    fn destroy_in<const N: usize>(&mut self, pool: &'static DynPool<N>) {
+    fn destroy<const N: usize>(&mut self, pool: &'static DynPool<N>) {
         let now = self.now();
         pool.destroy(&mut self.stack, &mut self.port, now).unwrap();
-        while self.stack.drain(&mut self.port, now).is_some() {}
+        self.drain();
     }
 
     fn read(&self, index: u16, sub: u8) -> Vec<u8> {
@@ -186,15 +206,30 @@ impl Node {
         self.stack.od().read_uint(index, sub).unwrap()
     }
 
+    /// `CcmWriteObject` of `value` (wire order).
+    fn write(&mut self, index: u16, sub: u8, value: &[u8]) {
+        let now = self.now();
+        self.stack
+            .write_object(index, sub, ByteOrder::Wire, value, now)
+            .unwrap();
+    }
+
     fn command(&mut self, cmd: NmtCommand) {
         self.stack.exec_command(cmd).unwrap();
-        let now = self.now();
-        while self.stack.drain(&mut self.port, now).is_some() {}
+        self.drain();
     }
 
     fn cycle(&mut self) {
         let now = self.now();
         self.stack.process(&mut self.port, now, |_, _| {});
+    }
+
+    /// `ms` cycles, 1 ms apart.
+    fn run(&mut self, ms: u32) {
+        for _ in 0..ms {
+            self.cycle();
+            self.port.bus().advance_ms(1);
+        }
     }
 }
 
@@ -236,8 +271,9 @@ fn snapshot(s: &Stack) -> Snapshot {
 /// `(index, sub, attribute, value)` of one container entry.
 type Spec = (u16, u8, u8, &'static [u8]);
 
-/// A container from `(index, sub, attribute, value)`.
-fn container(
+/// A container from `(index, sub, attribute, value)`, with an address
+/// segment and a parameter segment where given.
+fn encoded(
     entries: &[(u16, u8, u8, &[u8])],
     addresses: Option<&[u16]>,
     pi: Option<&PiParams>,
@@ -255,6 +291,12 @@ fn container(
     let mut out = vec![0u8; n];
     encode(&specs, addresses, true, pi, &mut out).unwrap();
     out
+}
+
+/// A container from `(index, sub, attribute, value)` without address and
+/// parameter segment.
+fn container(entries: &[(u16, u8, u8, &[u8])]) -> Vec<u8> {
+    encoded(entries, None, None)
 }
 
 const U32_1A00_1: [u8; 4] = 0xA4C0_0108u32.to_le_bytes();
@@ -295,13 +337,33 @@ fn sample_entries() -> Vec<Spec> {
     ]
 }
 
+/// The container of [`sample_entries`].
+fn sample() -> Vec<u8> {
+    container(&sample_entries())
+}
+
+/// The container of [`sample_entries`] with the addresses `addr` of its
+/// candidates (in container order: A040.1, A4C0.1..3, A580.3, 2100, 2101,
+/// 2102, 2103) and the parameter segment `pi` where given.
+fn sample_at(addr: &[u16; 9], pi: Option<&PiParams>) -> Vec<u8> {
+    encoded(&sample_entries(), Some(addr), pi)
+}
+
+/// A 48-byte image with the inputs at 40..48 and the outputs at 16..40.
+const AREAS: PiParams = PiParams {
+    total: 48,
+    input_offset: 40,
+    input_size: 8,
+    output_offset: 16,
+    output_size: 24,
+};
+
 node!(build_sample);
 // req: D-2.1.2-INDEX, D-2.1.2-NETVAR, D-2.1.4-ATTRIBUTES
 #[test]
 fn container_values_are_read_back() {
-    let bus = SimBus::new();
-    let mut n = Node::new(&bus, build_sample::od(), 1);
-    let c = container(&sample_entries(), None, None);
+    let mut n = Node::alone(build_sample::od());
+    let c = sample();
     let info = n.build(&build_sample::POOL, &c, None).unwrap();
     assert!(build_sample::POOL.is_in_use());
     // 0x1401, 0x1601, 0xA040, 0xA4C0, 0xA580, 0x2100..0x2103.
@@ -351,9 +413,8 @@ static IMAGE_RULE: [AtomicU8; 32] = decl::zeroed();
 // req: D-6-OFFSETS
 #[test]
 fn network_variables_are_placed_by_the_offset_rule() {
-    let bus = SimBus::new();
-    let mut n = Node::new(&bus, image_rule::od(), 1);
-    let c = container(&sample_entries(), None, None);
+    let mut n = Node::alone(image_rule::od());
+    let c = sample();
     let info = n.build(&image_rule::POOL, &c, Some(&IMAGE_RULE)).unwrap();
     // Inputs: 0xA040 sub 1 at 0. Outputs from 8 (next multiple of 8):
     // seed Bild 8, three BYTEs at +0..+2, the WORD of sub 3 at +4.
@@ -382,23 +443,13 @@ static IMAGE_ADDRESS: [AtomicU8; 64] = decl::zeroed();
 // req: D-2.1.3-ADDRESS, D-2.1.5-PIPARAM
 #[test]
 fn address_segment_and_parameter_segment_win() {
-    let bus = SimBus::new();
-    let mut n = Node::new(&bus, image_address::od(), 1);
-    // Candidates in container order: A040.1, A4C0.1..3, A580.3, 2100,
-    // 2101, 2102, 2103.
+    let mut n = Node::alone(image_address::od());
     let addr = [40u16, 20, 21, 22, 24, 0xFFFF, 0xFFFF, 32, 0xFFFF];
-    let pi = PiParams {
-        total: 48,
-        input_offset: 40,
-        input_size: 8,
-        output_offset: 16,
-        output_size: 24,
-    };
-    let c = container(&sample_entries(), Some(&addr), Some(&pi));
+    let c = sample_at(&addr, Some(&AREAS));
     let info = n
         .build(&image_address::POOL, &c, Some(&IMAGE_ADDRESS))
         .unwrap();
-    assert_eq!(info.pi, pi);
+    assert_eq!(info.pi, AREAS);
     let img = decl::get(&IMAGE_ADDRESS);
     assert_eq!(&img[20..23], &[0x11, 0x22, 0x33]);
     assert_eq!(&img[24..26], &0x1234u16.to_ne_bytes());
@@ -410,37 +461,54 @@ node!(overlap);
 static IMAGE_OVERLAP: [AtomicU8; 64] = decl::zeroed();
 #[test]
 fn variables_sharing_bytes_or_outside_the_image_are_refused() {
-    let bus = SimBus::new();
-    let mut n = Node::new(&bus, overlap::od(), 1);
+    let mut n = Node::alone(overlap::od());
     let before = snapshot(&n.stack);
     let addr = [40u16, 20, 21, 22, 21, 0xFFFF, 0xFFFF, 32, 0xFFFF];
-    let c = container(&sample_entries(), Some(&addr), None);
-    assert_eq!(
-        n.build(&overlap::POOL, &c, Some(&IMAGE_OVERLAP)),
-        Err(CopKernel::DynInvalidConfig)
-    );
+    let c = sample_at(&addr, None);
+    let (pool, image) = (&overlap::POOL, Some(&IMAGE_OVERLAP[..]));
+    n.refused(pool, &c, image, CopKernel::DynInvalidConfig, &before);
     let addr = [40u16, 20, 21, 22, 63, 0xFFFF, 0xFFFF, 32, 0xFFFF];
-    let c = container(&sample_entries(), Some(&addr), None);
-    assert_eq!(
-        n.build(&overlap::POOL, &c, Some(&IMAGE_OVERLAP)),
-        Err(CopKernel::DynNoMemory)
-    );
-    assert_eq!(snapshot(&n.stack), before);
-    assert!(!overlap::POOL.is_in_use());
+    let c = sample_at(&addr, None);
+    n.refused(pool, &c, image, CopKernel::DynNoMemory, &before);
     assert!(
         decl::get(&IMAGE_OVERLAP).iter().all(|b| *b == 0),
         "image untouched"
     );
 }
 
+/// Containers that the dictionary refuses before the pool is needed, with
+/// the codes.
+fn dictionary_refusals() -> Vec<(Vec<Spec>, CopKernel)> {
+    vec![
+        // A subindex an existing object does not have.
+        (
+            vec![(0x1017, 1, 0x70, &[0, 0])],
+            CopKernel::ObdSubindexNotExist,
+        ),
+        // An index that cannot be created.
+        (vec![(0x0005, 0, 0x70, &[0])], CopKernel::ObdIndexNotExist),
+        // A value of the wrong length for an existing object.
+        (
+            vec![(0x1017, 0, 0x70, &[1, 2, 3])],
+            CopKernel::ObdValueLengthError,
+        ),
+        // Network variable of the wrong size for its type (UNSIGNED16).
+        (vec![(0xA580, 1, 0x70, &[1])], CopKernel::DynInvalidConfig),
+        // A new object without type information and two different sizes.
+        (
+            vec![(0x2104, 0, 0x70, &[1]), (0x2104, 0, 0x70, &[1, 2])],
+            CopKernel::DynInvalidConfig,
+        ),
+    ]
+}
+
 node!(refusals);
 // req: D-2.1.2-PDO-PAIR, D-5.1-CODES
 #[test]
 fn refused_containers_change_nothing() {
-    let bus = SimBus::new();
-    let mut n = Node::new(&bus, refusals::od(), 1);
+    let mut n = Node::alone(refusals::od());
     let before = snapshot(&n.stack);
-    let cases: Vec<(Vec<Spec>, CopKernel)> = vec![
+    let mut cases: Vec<(Vec<Spec>, CopKernel)> = vec![
         // Mapping object 0x1602 missing (seed 2.1.2).
         (
             vec![(0x1402, 1, 0x70, &[0x02, 0x04, 0, 0x80])],
@@ -494,31 +562,14 @@ fn refused_containers_change_nothing() {
             ],
             CopKernel::CobAlreadyExist,
         ),
-        // A subindex an existing object does not have.
-        (
-            vec![(0x1017, 1, 0x70, &[0, 0])],
-            CopKernel::ObdSubindexNotExist,
-        ),
-        // Indices that cannot be created.
-        (vec![(0x0005, 0, 0x70, &[0])], CopKernel::ObdIndexNotExist),
+        // An index that cannot be created.
         (vec![(0xFFFF, 0, 0x70, &[0])], CopKernel::ObdIndexNotExist),
-        // A value of the wrong length for an existing object.
-        (
-            vec![(0x1017, 0, 0x70, &[1, 2, 3])],
-            CopKernel::ObdValueLengthError,
-        ),
-        // Network variable of the wrong size for its type (UNSIGNED16).
-        (vec![(0xA580, 1, 0x70, &[1])], CopKernel::DynInvalidConfig),
         // A BOOLEAN of value 2.
         (vec![(0x2103, 0, 0xE1, &[2])], CopKernel::DynInvalidConfig),
-        // A new object without type information and two different sizes.
-        (
-            vec![(0x2104, 0, 0x70, &[1]), (0x2104, 0, 0x70, &[1, 2])],
-            CopKernel::DynInvalidConfig,
-        ),
     ];
+    cases.extend(dictionary_refusals());
     for (entries, code) in cases {
-        let c = container(&entries, None, None);
+        let c = container(&entries);
         assert_eq!(
             n.build(&refusals::POOL, &c, None),
             Err(code),
@@ -533,8 +584,7 @@ node!(malformed);
 // req: D-2.1-CONTAINER
 #[test]
 fn malformed_containers_are_refused_without_change() {
-    let bus = SimBus::new();
-    let mut n = Node::new(&bus, malformed::od(), 1);
+    let mut n = Node::alone(malformed::od());
     let before = snapshot(&n.stack);
     let pi = PiParams {
         total: 16,
@@ -544,7 +594,7 @@ fn malformed_containers_are_refused_without_change() {
         output_size: 8,
     };
     let addr = [0u16, 8, 9, 10, 12, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF];
-    let good = container(&sample_entries(), Some(&addr), Some(&pi));
+    let good = sample_at(&addr, Some(&pi));
     let put = |b: &mut Vec<u8>, at: usize, v: u32| b[at..at + 4].copy_from_slice(&v.to_le_bytes());
     let get = |b: &Vec<u8>, at: usize| u32::from_le_bytes(b[at..at + 4].try_into().unwrap());
     let mut bad: Vec<(String, Vec<u8>)> = Vec::new();
@@ -609,20 +659,15 @@ fn malformed_containers_are_refused_without_change() {
 node!(rollback);
 #[test]
 fn a_refused_write_midway_puts_everything_back() {
-    let bus = SimBus::new();
-    let mut n = Node::new(&bus, rollback::od(), 1);
+    let mut n = Node::alone(rollback::od());
     let before = snapshot(&n.stack);
     rollback::REFUSE.store(true, Ordering::Relaxed);
     // 0x1017 and TPDO 1 are written before 0x2010 refuses.
     let mut entries = sample_entries();
     entries.push((0x2010, 0, 0x70, &[1, 2]));
-    let c = container(&entries, None, None);
-    assert_eq!(
-        n.build(&rollback::POOL, &c, None),
-        Err(CopKernel::ObdAccessViolation)
-    );
-    assert_eq!(snapshot(&n.stack), before);
-    assert!(!rollback::POOL.is_in_use());
+    let c = container(&entries);
+    let code = CopKernel::ObdAccessViolation;
+    n.refused(&rollback::POOL, &c, None, code, &before);
     rollback::REFUSE.store(false, Ordering::Relaxed);
     n.build(&rollback::POOL, &c, None).unwrap();
     assert_eq!(n.uint(0x2010, 0), 0x0201);
@@ -632,11 +677,10 @@ node!(twice);
 // req: D-3-REBUILD, D-5.2-DESTROY
 #[test]
 fn build_twice_destroy_and_rebuild() {
-    let bus = SimBus::new();
-    let mut n = Node::new(&bus, twice::od(), 1);
+    let mut n = Node::alone(twice::od());
     let before = snapshot(&n.stack);
     let tpdo_cob = n.uint(0x1800, 1);
-    let c = container(&sample_entries(), None, None);
+    let c = sample();
     n.build(&twice::POOL, &c, None).unwrap();
     assert_eq!(
         n.build(&twice::POOL, &c, None),
@@ -653,9 +697,7 @@ fn build_twice_destroy_and_rebuild() {
     assert_eq!(n.uint(0x1A00, 0), 0);
     assert!(n.stack.od().find_entry(0xA4C0).is_none());
     assert_eq!(n.uint(0x1017, 0), 500);
-    n.stack
-        .write_object(0x1017, 0, ByteOrder::Wire, &[0, 0], n.now())
-        .unwrap();
+    n.write(0x1017, 0, &[0, 0]);
     assert_eq!(snapshot(&n.stack), before);
     // Destroy without a build resets the PDO module too and succeeds.
     n.destroy(&twice::POOL);
@@ -668,32 +710,19 @@ static SMALL: DynPool<256> = DynPool::new();
 // req: D-5.1-CODES
 #[test]
 fn a_pool_too_small_is_no_memory() {
-    let bus = SimBus::new();
-    let mut n = Node::new(&bus, small_pool::od(), 1);
+    let mut n = Node::alone(small_pool::od());
     let before = snapshot(&n.stack);
-    let c = container(&sample_entries(), None, None);
-    let now = n.now();
-    assert_eq!(
-        SMALL.build(&mut n.stack, &mut n.port, now, &c, None),
-        Err(CopKernel::DynNoMemory)
-    );
-    assert_eq!(snapshot(&n.stack), before);
-    assert!(!SMALL.is_in_use());
+    n.refused(&SMALL, &sample(), None, CopKernel::DynNoMemory, &before);
 }
 
 node!(resets);
 #[test]
 fn nmt_resets_keep_the_dynamic_od_in_force() {
-    let bus = SimBus::new();
-    let mut n = Node::new(&bus, resets::od(), 1);
-    let c = container(&sample_entries(), None, None);
+    let mut n = Node::alone(resets::od());
+    let c = sample();
     n.build(&resets::POOL, &c, None).unwrap();
-    n.stack
-        .write_object(0x1017, 0, ByteOrder::Wire, &[7, 0], n.now())
-        .unwrap();
-    n.stack
-        .write_object(0x1401, 2, ByteOrder::Wire, &[1], n.now())
-        .unwrap();
+    n.write(0x1017, 0, &[7, 0]);
+    n.write(0x1401, 2, &[1]);
     n.command(NmtCommand::ResetCommunication);
     assert_eq!(n.stack.nmt_state(), NmtState::PreOperational);
     assert_eq!(n.uint(0x1017, 0), 500);
@@ -719,38 +748,30 @@ fn two_nodes_exchange_network_variables_by_pdo() {
     // Node 1 sends its outputs 0xA4C0 sub 1 and 0xA580 sub 3 with TPDO 1
     // (0x181, event timer 10 ms); node 2 receives them into its inputs
     // 0xA040 sub 1 and 0xA100 sub 3 with RPDO 1.
-    let ca = container(
-        &[
-            (0x1800, 1, 0x70, &[0x81, 0x01, 0, 0]),
-            (0x1800, 2, 0x70, &[0xFF]),
-            (0x1800, 5, 0x70, &[10, 0]),
-            (0x1A00, 0, 0x70, &[2]),
-            (0x1A00, 1, 0x70, &U32_1A00_1),
-            (0x1A00, 2, 0x70, &U32_1A00_2),
-            (0xA4C0, 0, 0x30, &[1]),
-            (0xA4C0, 1, 0xF0, &[0]),
-            (0xA580, 0, 0x30, &[3]),
-            (0xA580, 3, 0xF0, &[0, 0]),
-        ],
-        None,
-        None,
-    );
+    let ca = container(&[
+        (0x1800, 1, 0x70, &[0x81, 0x01, 0, 0]),
+        (0x1800, 2, 0x70, &[0xFF]),
+        (0x1800, 5, 0x70, &[10, 0]),
+        (0x1A00, 0, 0x70, &[2]),
+        (0x1A00, 1, 0x70, &U32_1A00_1),
+        (0x1A00, 2, 0x70, &U32_1A00_2),
+        (0xA4C0, 0, 0x30, &[1]),
+        (0xA4C0, 1, 0xF0, &[0]),
+        (0xA580, 0, 0x30, &[3]),
+        (0xA580, 3, 0xF0, &[0, 0]),
+    ]);
     let map_b2 = 0xA100_0310u32.to_le_bytes();
-    let cb = container(
-        &[
-            (0x1400, 1, 0x70, &[0x81, 0x01, 0, 0]),
-            (0x1400, 2, 0x70, &[0xFF]),
-            (0x1600, 0, 0x70, &[2]),
-            (0x1600, 1, 0x70, &U32_1601_1),
-            (0x1600, 2, 0x70, &map_b2),
-            (0xA040, 0, 0x30, &[1]),
-            (0xA040, 1, 0x70, &[0]),
-            (0xA100, 0, 0x30, &[3]),
-            (0xA100, 3, 0x70, &[0, 0]),
-        ],
-        None,
-        None,
-    );
+    let cb = container(&[
+        (0x1400, 1, 0x70, &[0x81, 0x01, 0, 0]),
+        (0x1400, 2, 0x70, &[0xFF]),
+        (0x1600, 0, 0x70, &[2]),
+        (0x1600, 1, 0x70, &U32_1601_1),
+        (0x1600, 2, 0x70, &map_b2),
+        (0xA040, 0, 0x30, &[1]),
+        (0xA040, 1, 0x70, &[0]),
+        (0xA100, 0, 0x30, &[3]),
+        (0xA100, 3, 0x70, &[0, 0]),
+    ]);
     let pa = a.build(&net_a::POOL, &ca, Some(&IMAGE_A)).unwrap().pi;
     let pb = b.build(&net_b::POOL, &cb, Some(&IMAGE_B)).unwrap().pi;
     a.command(NmtCommand::StartRemoteNode);
@@ -776,12 +797,7 @@ fn two_nodes_exchange_network_variables_by_pdo() {
     assert_eq!(u16::from_ne_bytes(w), 0xBEEF);
 
     // Node 1 reads node 2's dynamic objects with this library's SDO client.
-    let p = ClientParam {
-        tx_cob: 0x602,
-        rx_cob: 0x582,
-        server_node: 2,
-        timeout_ticks: 0,
-    };
+    let p = common::CLIENT_TO_NODE_2;
     a.stack.define_sdo_client(&mut a.port, 0x1280, p).unwrap();
     for (index, sub, want) in [
         (0xA100u16, 3u8, vec![0xEF, 0xBE]),
@@ -837,54 +853,25 @@ fn a_pool_in_use_checks_the_container_as_a_free_one() {
     let mut other = Node::new(&bus, busy_other::od(), 2);
     let mut free = Node::new(&bus, busy_free::od(), 3);
     // The owner's dynamic OD takes busy_owner::POOL.
-    owner
-        .build(
-            &busy_owner::POOL,
-            &container(&sample_entries(), None, None),
-            None,
-        )
-        .unwrap();
+    owner.build(&busy_owner::POOL, &sample(), None).unwrap();
     let owner_before = snapshot(&owner.stack);
     let other_before = snapshot(&other.stack);
-    let mut truncated = container(&sample_entries(), None, None);
+    let mut truncated = sample();
     truncated.truncate(60);
     // The container and the dictionary are checked before the pool is
     // needed; the PDOs' final state (like the writes) only after.
-    let cases: Vec<(Vec<u8>, CopKernel)> = vec![
-        (
-            container(&[(0x0005, 0, 0x70, &[0])], None, None),
-            CopKernel::ObdIndexNotExist,
-        ),
-        (
-            container(&[(0x1017, 1, 0x70, &[0, 0])], None, None),
-            CopKernel::ObdSubindexNotExist,
-        ),
-        (
-            container(&[(0x1017, 0, 0x70, &[1, 2, 3])], None, None),
-            CopKernel::ObdValueLengthError,
-        ),
-        (
-            container(&[(0xA580, 1, 0x70, &[1])], None, None),
-            CopKernel::DynInvalidConfig,
-        ),
-        (
-            container(
-                &[(0x2104, 0, 0x70, &[1]), (0x2104, 0, 0x70, &[1, 2])],
-                None,
-                None,
-            ),
-            CopKernel::DynInvalidConfig,
-        ),
+    let mut cases: Vec<(Vec<u8>, CopKernel)> = dictionary_refusals()
+        .iter()
+        .map(|(entries, code)| (container(entries), *code))
+        .collect();
+    cases.extend([
         (truncated, CopKernel::DynInvalidConfig),
         (
-            container(&[(0x1800, 1, 0x70, &[0x01, 0, 0, 0])], None, None),
+            container(&[(0x1800, 1, 0x70, &[0x01, 0, 0, 0])]),
             CopKernel::NoFreeInstance,
         ),
-        (
-            container(&sample_entries(), None, None),
-            CopKernel::NoFreeInstance,
-        ),
-    ];
+        (sample(), CopKernel::NoFreeInstance),
+    ]);
     for (c, code) in &cases {
         assert_eq!(other.build(&busy_owner::POOL, c, None), Err(*code));
         if *code != CopKernel::NoFreeInstance {
@@ -913,7 +900,7 @@ fn sixty_bytes() -> Vec<u8> {
     let entries: Vec<(u16, u8, u8, &[u8])> = (0..60u16)
         .map(|i| (0x2100 + i, 0u8, 0x70u8, &VALUES[i as usize..i as usize + 1]))
         .collect();
-    container(&entries, None, None)
+    container(&entries)
 }
 /// What `sixty_bytes` takes of the pool: 60 index entries, 60 subindex
 /// entries, 60 variables of one byte and the copy of the index segment
@@ -931,20 +918,15 @@ static TIGHT: DynPool<{ SIXTY_BYTES_POOL + 16 }> = DynPool::new();
 #[test]
 fn a_pool_without_room_for_the_index_builds_the_same() {
     // The same node-ID (the PDOs' default COB-IDs), on buses of their own.
-    let bus_t = SimBus::new();
-    let bus_r = SimBus::new();
-    let mut t = Node::new(&bus_t, tight::od(), 1);
-    let mut r = Node::new(&bus_r, roomy::od(), 1);
+    let mut t = Node::alone(tight::od());
+    let mut r = Node::alone(roomy::od());
     let c = sixty_bytes();
-    let now = t.now();
-    let info = TIGHT
-        .build(&mut t.stack, &mut t.port, now, &c, None)
-        .unwrap();
+    let info = t.build(&TIGHT, &c, None).unwrap();
     assert_eq!(info.pool_used, SIXTY_BYTES_POOL);
     assert_eq!(r.build(&roomy::POOL, &c, None), Ok(info));
     assert_eq!(snapshot(&t.stack), snapshot(&r.stack));
     assert_eq!(t.read(0x213B, 0), [59]);
-    t.destroy_in(&TIGHT);
+    t.destroy(&TIGHT);
     assert!(!TIGHT.is_in_use());
 }
 
@@ -1006,14 +988,14 @@ fn structure_entries_are_checked_not_written() {
         (0x1011, 1, 0x70, &[1, 0, 0, 0]),
         (0x2000, 0, 0x70, &[7]),
     ];
-    let c = container(&entries, None, None);
+    let c = container(&entries);
     n.build(&structure_node::POOL, &c, None).unwrap();
     assert_eq!(n.uint(0x1003, 0), 0, "no error was added");
     assert_eq!(n.uint(0x1010, 1), 0, "no store command was given");
     assert_eq!(n.uint(0x2000, 0), 7, "the ordinary entry was applied");
-    n.destroy_in(&structure_node::POOL);
+    n.destroy(&structure_node::POOL);
     // More entries than the object holds: the object cannot grow.
-    let c = container(&[(0x1003, 0, 0x70, &[5])], None, None);
+    let c = container(&[(0x1003, 0, 0x70, &[5])]);
     assert_eq!(
         n.build(&structure_node::POOL, &c, None).unwrap_err(),
         CopKernel::DynInvalidConfig
@@ -1033,18 +1015,14 @@ static IMAGE_CHANGE: [AtomicU8; 32] = decl::zeroed();
 fn event_driven_tpdo_follows_the_process_image() {
     let bus = SimBus::new();
     let mut n = Node::new(&bus, on_change::od(), 1);
-    let c = container(
-        &[
-            (0x1800, 1, 0x70, &[0x81, 0x01, 0, 0]),
-            (0x1800, 2, 0x70, &[0xFE]),
-            (0x1A00, 0, 0x70, &[1]),
-            (0x1A00, 1, 0x70, &U32_1A00_1),
-            (0xA4C0, 0, 0x30, &[1]),
-            (0xA4C0, 1, 0xF0, &[0]),
-        ],
-        None,
-        None,
-    );
+    let c = container(&[
+        (0x1800, 1, 0x70, &[0x81, 0x01, 0, 0]),
+        (0x1800, 2, 0x70, &[0xFE]),
+        (0x1A00, 0, 0x70, &[1]),
+        (0x1A00, 1, 0x70, &U32_1A00_1),
+        (0xA4C0, 0, 0x30, &[1]),
+        (0xA4C0, 1, 0xF0, &[0]),
+    ]);
     let pi = n
         .build(&on_change::POOL, &c, Some(&IMAGE_CHANGE))
         .unwrap()
@@ -1058,22 +1036,13 @@ fn event_driven_tpdo_follows_the_process_image() {
             .collect::<Vec<_>>()
     };
     bus.clear_trace();
-    for _ in 0..5 {
-        n.cycle();
-        bus.advance_ms(1);
-    }
+    n.run(5);
     assert!(tpdos(&bus).is_empty(), "nothing changed, nothing sent");
     let out = pi.output_offset as usize;
     IMAGE_CHANGE[out].store(0x5A, Ordering::Relaxed);
-    for _ in 0..5 {
-        n.cycle();
-        bus.advance_ms(1);
-    }
+    n.run(5);
     IMAGE_CHANGE[out].store(0x5B, Ordering::Relaxed);
-    for _ in 0..5 {
-        n.cycle();
-        bus.advance_ms(1);
-    }
+    n.run(5);
     assert_eq!(tpdos(&bus), [vec![0x5A], vec![0x5B]], "one TPDO per change");
 }
 
@@ -1099,25 +1068,13 @@ static IMAGE_COVERAGE: [AtomicU8; 64] = decl::zeroed();
 // req: D-2.1.5-PIPARAM
 #[test]
 fn variables_outside_the_areas_are_refused_and_named() {
-    let bus = SimBus::new();
-    let mut n = Node::new(&bus, coverage::od(), 1);
+    let mut n = Node::alone(coverage::od());
     let before = snapshot(&n.stack);
-    let pi = PiParams {
-        total: 48,
-        input_offset: 40,
-        input_size: 8,
-        output_offset: 16,
-        output_size: 24,
-    };
-    // Candidates in container order: A040.1, A4C0.1..3, A580.3, 2100,
-    // 2101, 2102, 2103 (as in address_segment_and_parameter_segment_win).
+    let (pool, image) = (&coverage::POOL, Some(&IMAGE_COVERAGE[..]));
     // A040.1 at 12: in the image (64 bytes), in no area.
     let addr = [12u16, 20, 21, 22, 24, 0xFFFF, 0xFFFF, 32, 0xFFFF];
-    let c = container(&sample_entries(), Some(&addr), Some(&pi));
-    assert_eq!(
-        n.build(&coverage::POOL, &c, Some(&IMAGE_COVERAGE)),
-        Err(CopKernel::DynInvalidConfig)
-    );
+    let c = sample_at(&addr, Some(&AREAS));
+    n.refused(pool, &c, image, CopKernel::DynInvalidConfig, &before);
     let e = coverage::POOL.last_error().unwrap();
     assert_eq!(e.code, CopKernel::DynInvalidConfig.code());
     let b = e.entry.unwrap();
@@ -1129,25 +1086,18 @@ fn variables_outside_the_areas_are_refused_and_named() {
     assert_eq!(b.offset, entry_offset(&c, pos));
     // 0x2102 (4 bytes) at 38: starts in the output area, ends past it.
     let addr = [40u16, 20, 21, 22, 24, 0xFFFF, 0xFFFF, 38, 0xFFFF];
-    let c = container(&sample_entries(), Some(&addr), Some(&pi));
-    assert_eq!(
-        n.build(&coverage::POOL, &c, Some(&IMAGE_COVERAGE)),
-        Err(CopKernel::DynInvalidConfig)
-    );
+    let c = sample_at(&addr, Some(&AREAS));
+    n.refused(pool, &c, image, CopKernel::DynInvalidConfig, &before);
     let b = coverage::POOL.last_error().unwrap().entry.unwrap();
     assert_eq!((b.index, b.sub), (0x2102, 0));
-    assert_eq!(snapshot(&n.stack), before);
     assert!(decl::get(&IMAGE_COVERAGE).iter().all(|b| *b == 0));
     // Inside the areas it builds, and the last error is cleared.
     let addr = [40u16, 20, 21, 22, 24, 0xFFFF, 0xFFFF, 32, 0xFFFF];
-    let c = container(&sample_entries(), Some(&addr), Some(&pi));
-    n.build(&coverage::POOL, &c, Some(&IMAGE_COVERAGE)).unwrap();
+    let c = sample_at(&addr, Some(&AREAS));
+    n.build(pool, &c, image).unwrap();
     assert_eq!(coverage::POOL.last_error(), None);
     // A second build concerns the container as a whole.
-    assert_eq!(
-        n.build(&coverage::POOL, &c, Some(&IMAGE_COVERAGE)),
-        Err(CopKernel::NoFreeInstance)
-    );
+    assert_eq!(n.build(pool, &c, image), Err(CopKernel::NoFreeInstance));
     assert_eq!(coverage::POOL.last_error().unwrap().entry, None);
 }
 
@@ -1158,10 +1108,9 @@ node!(blamed_write);
 /// code), and a PDO refusal names the PDO's first entry.
 #[test]
 fn refused_values_and_pdos_name_their_entry() {
-    let bus = SimBus::new();
-    let mut n = Node::new(&bus, blamed_write::od(), 1);
+    let mut n = Node::alone(blamed_write::od());
     let entries: Vec<Spec> = vec![(0x2000, 0, 0x70, &[1]), (0x1017, 0, 0x70, &[1, 2, 3])];
-    let c = container(&entries, None, None);
+    let c = container(&entries);
     let code = n.build(&blamed_write::POOL, &c, None).unwrap_err();
     let e = blamed_write::POOL.last_error().unwrap();
     assert_eq!(e.code, code.code());
@@ -1173,7 +1122,7 @@ fn refused_values_and_pdos_name_their_entry() {
         (0x1800, 2, 0x70, &[0xFE]),
         (0x1800, 1, 0x70, &[0x01, 0, 0, 0]),
     ];
-    let c = container(&entries, None, None);
+    let c = container(&entries);
     assert_eq!(
         n.build(&blamed_write::POOL, &c, None),
         Err(CopKernel::CobIllegalCanId)

@@ -163,6 +163,15 @@ pub fn attach(bus: &SimBus, od: ObjectDictionary, id: u8, queue: usize) -> (SimP
     (port, s)
 }
 
+/// The parameters of an SDO client of node 2's default server SDO
+/// (COB-IDs 0x602 / 0x582), timeout 0 (the client's default).
+pub const CLIENT_TO_NODE_2: ClientParam = ClientParam {
+    tx_cob: 0x602,
+    rx_cob: 0x582,
+    server_node: 2,
+    timeout_ticks: 0,
+};
+
 /// An SDO client and its server on one bus: node 1 (empty dictionary)
 /// with client 0x1280 to node 2 (no timeout), node 2 with `server_part`
 /// as its manufacturer part; the trace starts empty.
@@ -184,15 +193,9 @@ impl SdoNet {
             queue,
         );
         let mut master = attach(&bus, ObjectDictionary::empty(), 1, queue);
-        let p = ClientParam {
-            tx_cob: 0x602,
-            rx_cob: 0x582,
-            server_node: 2,
-            timeout_ticks: 0,
-        };
         master
             .1
-            .define_sdo_client(&mut master.0, 0x1280, p)
+            .define_sdo_client(&mut master.0, 0x1280, CLIENT_TO_NODE_2)
             .unwrap();
         bus.clear_trace();
         SdoNet {
