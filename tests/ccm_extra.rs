@@ -26,7 +26,9 @@ use cop::store::{self, part};
 use cop::wire::emcy::{self, Emergency};
 use cop::wire::time::TimeOfDay;
 
-/// TPDO 1 (0x180, type 1 = every SYNC) mapping 0x2000 (U8), and 0x2000.
+/// TPDO 1 (0x180, type 1 = every SYNC) mapping 0x2000 (U8), 0x2000 as
+/// the whole manufacturer part, 0x1001 and 0x1017; `od()` is the
+/// dictionary of these and the module's `GENERIC` part.
 macro_rules! sync_tpdo {
     () => {
         cop::pdo_commu!(static S1800, V1800 = 0x180, 1, 0, 0);
@@ -34,6 +36,11 @@ macro_rules! sync_tpdo {
         cop::od_ram!(static S2000, V2000: u8 = 0 => UInt8, PRW);
         cop::od_ram!(static S1001, ERR_REG: u8 = 0 => UInt8, R);
         cop::od_ram!(static S1017, HB: u16 = 0 => UInt16, SRW);
+        static MANUFACTURER: [ObdEntry; 1] = [ObdEntry::new(0x2000, &S2000, None)];
+
+        pub fn od() -> ObjectDictionary {
+            ObjectDictionary::new(&GENERIC, &MANUFACTURER, &[]).unwrap()
+        }
     };
 }
 
@@ -88,11 +95,6 @@ mod node_a {
         ObdEntry::new(0x1800, &S1800, None),
         ObdEntry::new(0x1A00, &S1A00, None),
     ];
-    static MANUFACTURER: [ObdEntry; 1] = [ObdEntry::new(0x2000, &S2000, None)];
-
-    pub fn od() -> ObjectDictionary {
-        ObjectDictionary::new(&GENERIC, &MANUFACTURER, &[]).unwrap()
-    }
 }
 
 mod node_b {
@@ -106,11 +108,6 @@ mod node_b {
         ObdEntry::new(0x1800, &S1800, None),
         ObdEntry::new(0x1A00, &S1A00, None),
     ];
-    static MANUFACTURER: [ObdEntry; 1] = [ObdEntry::new(0x2000, &S2000, None)];
-
-    pub fn od() -> ObjectDictionary {
-        ObjectDictionary::new(&GENERIC, &MANUFACTURER, &[]).unwrap()
-    }
 }
 
 /// The dictionaries are statics shared by every test of this file.
@@ -340,6 +337,11 @@ fn emcy_frames(net: &Net, node: u8) -> Vec<Vec<u8>> {
 }
 
 impl Node {
+    /// "save" (all parameters) written to 0x1010 sub 1.
+    fn save(&mut self) -> Result<(), OdError> {
+        self.write(0x1010, 1, store::SAVE_SIGNATURE.into(), 4)
+    }
+
     /// `CcmInitLgs`, then `CcmConfigLgs(guard_ms, factor)`.
     fn guard_lifetime(&mut self, guard_ms: u16, factor: u8) {
         self.stack.init_lgs();
@@ -712,7 +714,7 @@ fn store_is_refused_and_load_restores_at_the_next_reset() {
     );
     assert_eq!(net.a.read(0x1010, 1), 0);
     assert_eq!(
-        net.a.write(0x1010, 1, store::SAVE_SIGNATURE.into(), 4),
+        net.a.save(),
         Err(OdError::new(
             CopKernel::CcmStoreHwError,
             SdoAbort::CannotStore
@@ -739,8 +741,7 @@ fn store_is_refused_and_load_restores_at_the_next_reset() {
     assert_eq!(net.a.stack.store().restore_requested(), 0);
 
     // Changed communication and application values, then "load" all.
-    net.a.write(0x1017, 0, 500, 2).unwrap();
-    net.a.write(0x2000, 0, 0x55, 1).unwrap();
+    change_parameters(&mut net);
     assert_eq!(
         net.sdo_download(ID_A, 0x1011, 1, store::LOAD_SIGNATURE, 4),
         confirmed(0x1011, 1)
@@ -786,6 +787,22 @@ fn with_storage(net: &mut Net, nv: &'static SimNvram, key: u32) -> Result<(), Co
     net.a.stack.init_store()
 }
 
+/// A network whose node A saves into a simulated memory of its own (key
+/// 7), `CcmInitStore` done.
+fn stored_net() -> (Net, &'static SimNvram) {
+    let mut net = Net::new();
+    let nv = SimNvram::leaked(8192, 4);
+    with_storage(&mut net, nv, 7).unwrap();
+    (net, nv)
+}
+
+/// Changes a communication parameter (0x1017 = 500) and an application
+/// value (0x2000 = 0x55) of node A.
+fn change_parameters(net: &mut Net) {
+    net.a.write(0x1017, 0, 500, 2).unwrap();
+    net.a.write(0x2000, 0, 0x55, 1).unwrap();
+}
+
 /// A power cycle of node A: the RAM variables lose their values (the
 /// defaults come back), a new stack starts, `CcmInitStore` as the SYS TEC
 /// slave calls it, then boot-up.
@@ -801,17 +818,14 @@ fn power_cycle(net: &mut Net, nv: &'static SimNvram, key: u32) -> Result<(), Cop
 
 #[test]
 fn saved_parameters_come_back_after_a_power_cycle() {
-    let mut net = Net::new();
-    let nv = SimNvram::leaked(8192, 4);
-    assert_eq!(with_storage(&mut net, nv, 7), Ok(()));
+    let (mut net, nv) = stored_net();
     // CiA 301 7.5.2.13: bit 0 "saves parameters on command".
     assert_eq!(net.a.read(0x1010, 1), 1);
     assert_eq!(
         net.a.stack.check_archive(u32::from(part::GEN)),
         Err(CopKernel::CcmStoreUnvalidState)
     );
-    net.a.write(0x1017, 0, 500, 2).unwrap();
-    net.a.write(0x2000, 0, 0x55, 1).unwrap();
+    change_parameters(&mut net);
     assert_eq!(
         net.sdo_download(ID_A, 0x1010, 1, store::SAVE_SIGNATURE, 4),
         confirmed(0x1010, 1)
@@ -834,16 +848,14 @@ fn saved_parameters_come_back_after_a_power_cycle() {
 
 #[test]
 fn save_while_operational_and_bad_signatures_are_refused() {
-    let mut net = Net::new();
-    let nv = SimNvram::leaked(8192, 4);
-    with_storage(&mut net, nv, 7).unwrap();
+    let (mut net, nv) = stored_net();
     net.a.command(NmtCommand::StartRemoteNode);
     assert_eq!(
         net.sdo_download(ID_A, 0x1010, 1, store::SAVE_SIGNATURE, 4),
         abort(0x1010, 1, 0x0800_0022)
     );
     assert_eq!(
-        net.a.write(0x1010, 1, store::SAVE_SIGNATURE.into(), 4),
+        net.a.save(),
         Err(OdError::new(
             CopKernel::CcmStoreUnvalidState,
             SdoAbort::DeviceState
@@ -867,11 +879,8 @@ fn save_while_operational_and_bad_signatures_are_refused() {
 
 #[test]
 fn load_removes_the_selected_part_from_the_image() {
-    let mut net = Net::new();
-    let nv = SimNvram::leaked(8192, 4);
-    with_storage(&mut net, nv, 7).unwrap();
-    net.a.write(0x1017, 0, 500, 2).unwrap();
-    net.a.write(0x2000, 0, 0x55, 1).unwrap();
+    let (mut net, nv) = stored_net();
+    change_parameters(&mut net);
     assert_eq!(
         net.sdo_download(ID_A, 0x1010, 1, store::SAVE_SIGNATURE, 4),
         confirmed(0x1010, 1)
@@ -897,13 +906,9 @@ fn load_removes_the_selected_part_from_the_image() {
 
 #[test]
 fn an_image_of_another_configuration_is_ignored() {
-    let mut net = Net::new();
-    let nv = SimNvram::leaked(8192, 4);
-    with_storage(&mut net, nv, 7).unwrap();
+    let (mut net, nv) = stored_net();
     net.a.write(0x2000, 0, 0x55, 1).unwrap();
-    net.a
-        .write(0x1010, 1, store::SAVE_SIGNATURE.into(), 4)
-        .unwrap();
+    net.a.save().unwrap();
     assert_eq!(
         power_cycle(&mut net, nv, 8),
         Err(CopKernel::CcmStoreUnvalidState)
@@ -916,9 +921,7 @@ fn an_image_of_another_configuration_is_ignored() {
     // The node still saves (a new image replaces the foreign one).
     assert_eq!(net.a.read(0x1010, 1), 1);
     net.a.write(0x2000, 0, 0x66, 1).unwrap();
-    net.a
-        .write(0x1010, 1, store::SAVE_SIGNATURE.into(), 4)
-        .unwrap();
+    net.a.save().unwrap();
     assert_eq!(power_cycle(&mut net, nv, 8), Ok(()));
     assert_eq!(net.a.read(0x2000, 0), 0x66);
 }
@@ -933,7 +936,7 @@ fn cut_save(net: &mut Net, nv: &'static SimNvram, cut: impl Fn(&SimNvram), at: u
     net.a.write(0x1017, 0, changed.0, 2).unwrap();
     net.a.write(0x2000, 0, changed.1, 1).unwrap();
     cut(nv);
-    let r = net.a.write(0x1010, 1, store::SAVE_SIGNATURE.into(), 4);
+    let r = net.a.save();
     nv.power_on();
     power_cycle(net, nv, 7).unwrap();
     let after = (net.a.read(0x1017, 0), net.a.read(0x2000, 0));
@@ -955,13 +958,9 @@ fn cut_save(net: &mut Net, nv: &'static SimNvram, cut: impl Fn(&SimNvram), at: u
 // fraction of the time).
 #[test]
 fn a_power_cut_during_a_save_keeps_the_old_parameters() {
-    let mut net = Net::new();
-    let nv = SimNvram::leaked(8192, 4);
-    with_storage(&mut net, nv, 7).unwrap();
+    let (mut net, nv) = stored_net();
     net.a.write(0x2000, 0, 0x01, 1).unwrap();
-    net.a
-        .write(0x1010, 1, store::SAVE_SIGNATURE.into(), 4)
-        .unwrap();
+    net.a.save().unwrap();
     let per_save = nv.bytes_written();
     // Under Miri (undefined behaviour only) and in the emulated big-endian
     // run (byte order, which every point of a save uses alike) a sample:
