@@ -420,4 +420,16 @@ impl Net {
     pub fn now(&self) -> Ticks {
         self.bus.now()
     }
+
+    /// Checks that the consumer reports nothing in this cycle and the SCT
+    /// timeout of SRDO 1 in a cycle one tick later.
+    #[track_caller]
+    pub fn sct_times_out_one_tick_later(&mut self) {
+        assert!(no_pm(&self.c.cycle()).is_empty());
+        self.wait_ticks(1);
+        assert_eq!(
+            no_pm(&self.c.cycle()),
+            vec![Event::SrdoError(0x1301, CopKernel::SrdoSctTimeout)]
+        );
+    }
 }
