@@ -221,6 +221,16 @@ fn check_codes_over_the_write_path() {
     );
 }
 
+/// Switches SRDO 1 off (direction 0), writes `mapping`, switches it on
+/// again as a transmit SRDO and returns what [`check_after`] gives.
+#[cfg(not(feature = "srdo-static-mapping"))]
+fn remap(n: &mut Node, mapping: &[Write]) -> Result<(), OdError> {
+    n.write(0x1301, 1, 0, 1).unwrap();
+    let mut writes = mapping.to_vec();
+    writes.push((0x1301, 1, 1, 1));
+    check_after(n, &writes)
+}
+
 #[cfg(not(feature = "srdo-static-mapping"))]
 // req: SB-2-MAPPING
 #[test]
@@ -245,37 +255,29 @@ fn mapping_rules_over_the_write_path() {
         refused(CopKernel::SrdoErrorMapp, 0x0800_0020)
     );
     // An object that does not exist.
-    net.p.write(0x1301, 1, 0, 1).unwrap();
     assert_eq!(
-        check_after(
+        remap(
             &mut net.p,
-            &[
-                (0x1381, 0, 2, 1),
-                (0x1381, 1, 0x6202_0110, 4),
-                (0x1301, 1, 1, 1)
-            ]
+            &[(0x1381, 0, 2, 1), (0x1381, 1, 0x6202_0110, 4)]
         ),
         refused(CopKernel::SrdoErrorMapp, 0x0800_0020)
     );
     // Five pairs of 16 bits: 10 bytes do not fit a frame.
     if cop::config::SRDO_MAX_MAPPENTRIES >= 10 {
-        net.p.write(0x1301, 1, 0, 1).unwrap();
         let mut w = vec![(0x1381u16, 0u8, 0u32, 1usize)];
         for pair in 0..5u8 {
             w.push((0x1381, 2 * pair + 1, 0x6200_0110, 4));
             w.push((0x1381, 2 * pair + 2, 0x6300_0110, 4));
         }
         w.push((0x1381, 0, 10, 1));
-        w.push((0x1301, 1, 1, 1));
         assert_eq!(
-            check_after(&mut net.p, &w),
+            remap(&mut net.p, &w),
             refused(CopKernel::SrdoLengthExceeded, 0x0800_0020)
         );
     }
     // Back to the original mapping: valid again.
-    net.p.write(0x1301, 1, 0, 1).unwrap();
     assert_eq!(
-        check_after(
+        remap(
             &mut net.p,
             &[
                 (0x1381, 0, 0, 1),
@@ -284,7 +286,6 @@ fn mapping_rules_over_the_write_path() {
                 (0x1381, 3, 0x6201_0110, 4),
                 (0x1381, 4, 0x6301_0110, 4),
                 (0x1381, 0, 4, 1),
-                (0x1301, 1, 1, 1),
             ]
         ),
         Ok(())
