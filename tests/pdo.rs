@@ -172,6 +172,17 @@ impl Net {
         self.bus.inject(encode_sync(CanId::std_masked(0x80), None));
         self.step();
     }
+
+    /// 30 ms (the event timers), a SYNC and a frame of B's RPDO 1 (0x181).
+    fn everything_a_pdo_acts_on(&mut self) {
+        self.run(30);
+        self.sync();
+        self.bus.inject(CanFrame::new(
+            CanId::std_masked(0x181),
+            &[1, 2, 0, 3, 0, 0, 0],
+        ));
+        self.step();
+    }
 }
 
 fn set_inputs(n: &mut Node, u8v: u8, u16v: u16, u32v: u32) {
@@ -637,13 +648,7 @@ fn pdos_are_silent_outside_operational() {
     net.a.pdo(0x1801, 0x281, 1, 0, 0, &[0x2000_0108]);
     // PRE-OPERATIONAL: events, event timer, SYNC and RPDOs do nothing.
     net.a.stack.signal_pdo(0x1800).unwrap();
-    net.run(30);
-    net.sync();
-    net.bus.inject(CanFrame::new(
-        CanId::std_masked(0x181),
-        &[1, 2, 0, 3, 0, 0, 0],
-    ));
-    net.step();
+    net.everything_a_pdo_acts_on();
     assert!(net.frames(0x281).is_empty());
     assert_eq!(
         net.frames(0x181).len(),
@@ -658,13 +663,7 @@ fn pdos_are_silent_outside_operational() {
     // STOPPED: silent again.
     net.a.command(NmtCommand::StopRemoteNode);
     net.b.command(NmtCommand::StopRemoteNode);
-    net.run(30);
-    net.sync();
-    net.bus.inject(CanFrame::new(
-        CanId::std_masked(0x181),
-        &[1, 2, 0, 3, 0, 0, 0],
-    ));
-    net.step();
+    net.everything_a_pdo_acts_on();
     assert_eq!(net.frames(0x181).len(), 3, "only the injected frame");
     assert!(net.frames(0x281).is_empty());
     assert_eq!(outputs(&net.b), (0, 0, 0));
