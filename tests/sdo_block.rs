@@ -70,6 +70,23 @@ impl Net {
         }
     }
 
+    /// Block download of `data` (from `TX_BUF`) into 0x2000, run until it
+    /// ends (at most `limit` cycles).
+    fn download(&mut self, data: &[u8], limit: usize) {
+        load_tx(data);
+        self.start(Direction::BlockDownload, 0x2000, &TX_BUF, data.len())
+            .unwrap();
+        self.run_until_done(limit);
+    }
+
+    /// Block upload of 0x2000 into the 256 bytes of `RX_BUF`, run until it
+    /// ends (at most `limit` cycles).
+    fn upload(&mut self, limit: usize) {
+        self.start(Direction::BlockUpload, 0x2000, &RX_BUF, 256)
+            .unwrap();
+        self.run_until_done(limit);
+    }
+
     fn transferred(&self) -> u32 {
         self.master.1.sdoc().transferred(0x1280).unwrap()
     }
@@ -118,10 +135,7 @@ fn long_object_both_ways_with_crc() {
     let _g = serial();
     let mut net = Net::new();
     let data = pattern(LONG, 3);
-    load_tx(&data);
-    net.start(Direction::BlockDownload, 0x2000, &TX_BUF, LONG)
-        .unwrap();
-    net.run_until_done(200);
+    net.download(&data, 200);
     assert_eq!(net.state(), (SdocState::Finished, 0));
     assert_eq!(&decl::get(&TEXT)[..LONG], &data[..]);
     assert_eq!(net.transferred(), LONG as u32);
@@ -155,9 +169,7 @@ fn long_object_both_ways_with_crc() {
 
     net.bus.clear_trace();
     decl::set(&RX_BUF, [0xEE; 256]);
-    net.start(Direction::BlockUpload, 0x2000, &RX_BUF, 256)
-        .unwrap();
-    net.run_until_done(200);
+    net.upload(200);
     assert_eq!(net.state(), (SdocState::Finished, 0));
     assert_eq!(net.transferred(), LONG as u32);
     assert_eq!(rx(LONG), data);
@@ -186,12 +198,9 @@ fn lost_download_segment_is_sent_again() {
     let _g = serial();
     let mut net = Net::new();
     let data = pattern(LONG, 11);
-    load_tx(&data);
     // Segment 3 of the first sub-block never reaches the server.
     let hits = fault_once(&net.bus, MASTER, 0x602, 0x03, |_| Delivery::Drop);
-    net.start(Direction::BlockDownload, 0x2000, &TX_BUF, LONG)
-        .unwrap();
-    net.run_until_done(300);
+    net.download(&data, 300);
     assert_eq!(hits.get(), 1);
     assert_eq!(net.state(), (SdocState::Finished, 0));
     assert_eq!(&decl::get(&TEXT)[..LONG], &data[..]);
@@ -206,16 +215,11 @@ fn lost_upload_segment_is_sent_again() {
     let _g = serial();
     let mut net = Net::new();
     let data = pattern(LONG, 17);
-    load_tx(&data);
-    net.start(Direction::BlockDownload, 0x2000, &TX_BUF, LONG)
-        .unwrap();
-    net.run_until_done(200);
+    net.download(&data, 200);
     assert_eq!(net.state().0, SdocState::Finished);
     net.bus.clear_trace();
     let hits = fault_once(&net.bus, SERVER, 0x582, 0x04, |_| Delivery::Drop);
-    net.start(Direction::BlockUpload, 0x2000, &RX_BUF, 256)
-        .unwrap();
-    net.run_until_done(300);
+    net.upload(300);
     assert_eq!(hits.get(), 1);
     assert_eq!(net.state(), (SdocState::Finished, 0));
     assert_eq!(rx(LONG), data);
@@ -229,15 +233,12 @@ fn lost_last_segment_of_a_sub_block_is_recovered_after_half_the_timeout() {
     let _g = serial();
     let mut net = Net::new();
     let data = pattern(LONG, 23);
-    load_tx(&data);
     // The segment that ends the first sub-block is lost: the server
     // confirms what it has once no segment came for half its timeout
     // (SDOS_DEFAULT_TIMEOUT 0.5 s).
     let last = SDO_BLOCKSIZE_DOWNLOAD;
     let hits = fault_once(&net.bus, MASTER, 0x602, last, |_| Delivery::Drop);
-    net.start(Direction::BlockDownload, 0x2000, &TX_BUF, LONG)
-        .unwrap();
-    net.run_until_done(1000);
+    net.download(&data, 1000);
     assert_eq!(hits.get(), 1);
     assert_eq!(net.state(), (SdocState::Finished, 0));
     assert_eq!(&decl::get(&TEXT)[..LONG], &data[..]);
@@ -249,9 +250,7 @@ fn lost_last_segment_of_a_sub_block_is_recovered_after_half_the_timeout() {
     net.bus.clear_trace();
     let last = SDO_BLOCKSIZE_UPLOAD;
     let hits = fault_once(&net.bus, SERVER, 0x582, last, |_| Delivery::Drop);
-    net.start(Direction::BlockUpload, 0x2000, &RX_BUF, 256)
-        .unwrap();
-    net.run_until_done(1000);
+    net.upload(1000);
     assert_eq!(hits.get(), 1);
     assert_eq!(net.state(), (SdocState::Finished, 0));
     assert_eq!(rx(LONG), data);
@@ -262,40 +261,29 @@ fn corrupted_data_is_a_crc_error() {
     let _g = serial();
     let mut net = Net::new();
     let old = pattern(LONG, 41);
-    load_tx(&old);
-    net.start(Direction::BlockDownload, 0x2000, &TX_BUF, LONG)
-        .unwrap();
-    net.run_until_done(200);
+    net.download(&old, 200);
     assert_eq!(net.state().0, SdocState::Finished);
     let data = pattern(LONG, 29);
-    load_tx(&data);
     // One data byte of download segment 2 changes on the way (a fault the
     // CAN CRC would normally catch): the server's CRC check does.
     let hits = fault_once(&net.bus, MASTER, 0x602, 0x02, |f| {
         f.data[3] ^= 0x01;
         Delivery::Deliver
     });
-    net.start(Direction::BlockDownload, 0x2000, &TX_BUF, LONG)
-        .unwrap();
-    net.run_until_done(200);
+    net.download(&data, 200);
     assert_eq!(hits.get(), 1);
     // CiA 301: 0x05040004 CRC error; the object keeps its value.
     assert_eq!(net.state(), (SdocState::RxAborted, 0x0504_0004));
     assert_eq!(&decl::get(&TEXT)[..LONG], &old[..]);
     // Upload: the client checks.
-    load_tx(&data);
     net.bus.set_filter(None);
-    net.start(Direction::BlockDownload, 0x2000, &TX_BUF, LONG)
-        .unwrap();
-    net.run_until_done(200);
+    net.download(&data, 200);
     assert_eq!(net.state().0, SdocState::Finished);
     let hits = fault_once(&net.bus, SERVER, 0x582, 0x05, |f| {
         f.data[7] ^= 0x80;
         Delivery::Deliver
     });
-    net.start(Direction::BlockUpload, 0x2000, &RX_BUF, 256)
-        .unwrap();
-    net.run_until_done(200);
+    net.upload(200);
     assert_eq!(hits.get(), 1);
     assert_eq!(net.state(), (SdocState::TxAborted, 0x0504_0004));
     assert!(net.has("  can0  602   [8]  80 00 20 00 04 00 04 05"));
@@ -368,10 +356,7 @@ fn upload_never_writes_past_the_buffer() {
     let _g = serial();
     let mut net = Net::new();
     let data = pattern(LONG, 31);
-    load_tx(&data);
-    net.start(Direction::BlockDownload, 0x2000, &TX_BUF, LONG)
-        .unwrap();
-    net.run_until_done(200);
+    net.download(&data, 200);
     decl::set(&RX_BUF, [0xEE; 256]);
     net.start(Direction::BlockUpload, 0x2000, &RX_BUF, 100)
         .unwrap();
@@ -419,12 +404,9 @@ fn lost_confirmation_ends_in_a_timeout() {
     let _g = serial();
     let mut net = Net::new();
     let data = pattern(40, 5);
-    load_tx(&data);
     // The server's first confirmation is lost.
     let hits = fault_once(&net.bus, SERVER, 0x582, 0xA2, |_| Delivery::Drop);
-    net.start(Direction::BlockDownload, 0x2000, &TX_BUF, 40)
-        .unwrap();
-    net.run_until_done(1000);
+    net.download(&data, 1000);
     assert_eq!(hits.get(), 1);
     // Both wait 0.5 s (SDOS / SDOC default timeout) from the last segment;
     // the server's supervision fires first and its abort 0x05040000 ends
@@ -433,9 +415,7 @@ fn lost_confirmation_ends_in_a_timeout() {
     assert!(net.has("  can0  582   [8]  80 00 20 00 00 00 04 05"));
     // Both sides are idle again: the next transfer goes through.
     net.bus.set_filter(None);
-    net.start(Direction::BlockDownload, 0x2000, &TX_BUF, 40)
-        .unwrap();
-    net.run_until_done(100);
+    net.download(&data, 100);
     assert_eq!(net.state(), (SdocState::Finished, 0));
     assert_eq!(&decl::get(&TEXT)[..40], &data[..]);
 }
@@ -445,10 +425,7 @@ fn short_frames_inside_a_sub_block_are_ignored() {
     let _g = serial();
     let mut net = Net::new();
     let data = pattern(LONG, 37);
-    load_tx(&data);
-    net.start(Direction::BlockDownload, 0x2000, &TX_BUF, LONG)
-        .unwrap();
-    net.run_until_done(200);
+    net.download(&data, 200);
     // A 7-byte frame on the response COB-ID in the middle of the upload's
     // sub-block: not an SDO frame (CiA 301: always 8 bytes).
     net.start(Direction::BlockUpload, 0x2000, &RX_BUF, 256)
