@@ -122,6 +122,13 @@ impl Bench {
         }
     }
 
+    /// [`Bench::new`] ten ticks before `t`, run tick by tick up to `t`.
+    fn at(t: u32) -> Bench {
+        let mut b = Bench::new(t.wrapping_sub(10));
+        b.ticks(10);
+        b
+    }
+
     fn now(&self) -> u32 {
         self.bus.now().0
     }
@@ -196,8 +203,7 @@ fn frame_2_exactly_at_srvt_is_valid_one_tick_later_is_a_timeout() {
         for gap in [SRVT - 1, SRVT, SRVT + 1] {
             // Frame 1 at limit - SRVT, so that frame 1 + SRVT = limit.
             let t1 = limit.wrapping_sub(SRVT);
-            let mut b = Bench::new(t1.wrapping_sub(10));
-            b.ticks(10);
+            let mut b = Bench::at(t1);
             let (n, i) = b.send();
             b.deliver(n);
             // A consumer cycle in every tick; frame 2 comes in its tick
@@ -222,8 +228,7 @@ fn frame_2_exactly_at_srvt_is_valid_one_tick_later_is_a_timeout() {
 fn srvt_expiry_without_frame_2_follows_the_switch() {
     for limit in LIMITS {
         let t1 = limit.wrapping_sub(SRVT);
-        let mut b = Bench::new(t1.wrapping_sub(10));
-        b.ticks(10);
+        let mut b = Bench::at(t1);
         let (n, _) = b.send();
         b.deliver(n);
         b.ticks(SRVT);
@@ -245,8 +250,7 @@ fn frame_1_exactly_at_sct_is_in_time_one_tick_later_is_a_timeout() {
         for interval in [SCT - 1, SCT, SCT + 1] {
             // The previous valid pair at limit - SCT.
             let t0 = limit.wrapping_sub(SCT);
-            let mut b = Bench::new(t0.wrapping_sub(10));
-            b.ticks(10);
+            let mut b = Bench::at(t0);
             b.pair_now();
             assert_eq!(b.take(), vec![ok_at(t0)]);
             // The consumer runs in every tick, so an expiry is found in the
@@ -272,8 +276,7 @@ fn frame_1_exactly_at_sct_is_in_time_one_tick_later_is_a_timeout() {
 fn late_frame_1_reports_the_sct_itself_when_no_cycle_came_between() {
     for limit in LIMITS {
         let t0 = limit.wrapping_sub(SCT);
-        let mut b = Bench::new(t0.wrapping_sub(10));
-        b.ticks(10);
+        let mut b = Bench::at(t0);
         b.pair_now();
         b.take();
         // No consumer cycle between the limit and the late pair.
