@@ -1,7 +1,8 @@
 // objdict_services.h - a slave dictionary with every object of the smaller
 // CCM services (test_services_api.c): pre-defined error field 0x1003, SYNC
 // 0x1005/0x1006, guard time 0x100C, life time factor 0x100D, store 0x1010,
-// restore 0x1011, EMCY COB-ID 0x1014, heartbeat 0x1017, SDO server, and a
+// restore 0x1011, EMCY COB-ID 0x1014 (default 0x80000000, no producer, as
+// in the AWorks dictionaries), heartbeat 0x1017, SDO server, and a
 // synchronous TPDO 1 (type 1) mapping 0x2070/1 (bServicesOut_g). The stack
 // callbacks are attached as SYS TEC objdict.h files do. Init function
 // ObdInitRamServices.
@@ -61,7 +62,7 @@ OBD_BEGIN ()
         OBD_END_INDEX(0x1011)
 
         OBD_BEGIN_INDEX_RAM(0x1014, 0x01, EmcpCbConfigEmergencyId)
-            OBD_SUBINDEX_RAM_VAR(0x1014, 0x00, 0x07, 0x83, tObdUnsigned32, COB_ID_EMCY, 0x00000080)
+            OBD_SUBINDEX_RAM_VAR(0x1014, 0x00, 0x07, 0x83, tObdUnsigned32, COB_ID_EMCY, 0x80000000)
         OBD_END_INDEX(0x1014)
 
         OBD_BEGIN_INDEX_RAM(0x1017, 0x01, HbpCbConfigHeartbeat)

@@ -5,7 +5,8 @@
  *   node P (simulated node 0): objdict_services.h, node-ID 2 - a slave whose
  *          NMT callback does what the AWorks adapter does (CcmInitLgs and
  *          CcmInitStore at kNmtEvEnterInitialising, CcmStoreCheckArchivState
- *          at kNmtEvResetCommunication);
+ *          and CcmConfigEmcp (0x80 + node-ID; the dictionary's 0x1014 is
+ *          0x80000000) at kNmtEvResetCommunication);
  *   node M (simulated node 1): objdict_master.h, node-ID 1 - NMT master
  *          guarding P and emergency consumer of P.
  *
@@ -36,6 +37,8 @@ extern tObdUnsigned8 bServicesOut_g;
 static tCopKernel RetInitLgs_g = 0xFFFF;
 static tCopKernel RetInitStore_g = 0xFFFF;
 static tCopKernel RetArchive_g = 0xFFFF;
+static tCopKernel RetConfigEmcp_g = 0xFFFF;
+static unsigned uResetComm_g;
 
 static tCopKernel PUBLIC AppCbNmtEvent (tNmtEvent NmtEvent_p)
 {
@@ -51,7 +54,9 @@ static tCopKernel PUBLIC AppCbNmtEvent (tNmtEvent NmtEvent_p)
         case kNmtEvResetCommunication:
             /* "no valid archive": the application configures its defaults */
             RetArchive_g = CcmStoreCheckArchivState(kObdPartGen);
-            return kCopSuccessful;
+            uResetComm_g++;
+            RetConfigEmcp_g = CcmConfigEmcp(0x80 + ID_P);
+            return RetConfigEmcp_g;
 
         default:
             return kCopSuccessful;
@@ -183,6 +188,9 @@ static void StartUp (void)
     CHECK_RET(RetInitLgs_g, kCopSuccessful);
     CHECK_RET(RetInitStore_g, kCopCcmStoreHwError);
     CHECK_RET(RetArchive_g, kCopCcmStoreHwError);
+    CHECK_RET(RetConfigEmcp_g, kCopSuccessful);
+    /* the object shows the COB-ID the callback configured (CiA 301 7.5.2.21) */
+    CHECK_EQ(ReadU32(0x1014, 0), 0x80 + ID_P);
     CHECK_RET(CcmConnectToNet(), kCopSuccessful);
     CHECK_RET(TestInitNode(SIM_M, ID_M, ObdInitRamMaster, NULL), kCopSuccessful);
     CHECK_RET(CcmConnectToNet(), kCopSuccessful);
@@ -196,6 +204,7 @@ static void EmergencyConsumer (void)
     static CONST BYTE abTwice[2] = { ID_P, ID_P };
     static CONST BYTE abZero[1] = { 0 };
     static CONST BYTE abOwn[1] = { ID_M };
+    static CONST BYTE abResetCommP[2] = { 0x82, ID_P };
     BYTE abTooMany[EMCC_MAX_CONSUMER + 1];
     tEmcParam Emcy;
     unsigned i;
@@ -232,6 +241,21 @@ static void EmergencyConsumer (void)
     CHECK_EQ(aEmcc_g[0].m_abManufactErrorCode[0], 0xA1);
     CHECK_EQ(aEmcc_g[0].m_abManufactErrorCode[4], 0xA5);
     CHECK_EQ(aEmcc_g[0].m_wAdditionalInfo, 0);
+    TestDrainSent();
+
+    /* NMT reset communication of P [82 02]: 0x1014 goes back to 0x80000000,
+     * the callback configures it again, and P's emergencies still arrive */
+    CHECK(SimInject(0x000, 0, 2, abResetCommP) >= 1);
+    Run(5);
+    CHECK_EQ(uResetComm_g, 2);
+    SimSelectNode(SIM_P);
+    CHECK_RET(RetConfigEmcp_g, kCopSuccessful);
+    CHECK_EQ(ReadU32(0x1014, 0), 0x80 + ID_P);
+    CHECK_RET(CcmSendEmergency(&Emcy), kCopSuccessful);
+    Run(1);
+    CHECK_EQ(uEmcc_g, 2);
+    CHECK_EQ(abEmccNode_g[1], ID_P);
+    CHECK_EQ(aEmcc_g[1].m_wEmcyErrorCode, 0x5000);
     TestDrainSent();
 }
 
