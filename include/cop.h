@@ -136,7 +136,12 @@ void CcmRegisterErrorCallback(tCcmErrorCallback fpErrorCallback_p);
 tCopKernel CcmConfigHbp(WORD wHbProducerTime_p);
 
 /**
- * `CcmConfigEmcp`: sets the EMCY COB-ID (bit 31 disables the producer).
+ * `CcmConfigEmcp`: sets the EMCY COB-ID (bit 31 disables the producer),
+ * through 0x1014 where the dictionary has it; called from the NMT
+ * callback at kNmtEvResetCommunication it holds after the reset.
+ * kCopInvalidParam for a COB-ID an emergency cannot use (bit 30 set, an
+ * identifier CiA 301 reserves, 29 bits without CAN 2.0B); otherwise the
+ * codes of the object write.
  */
 tCopKernel CcmConfigEmcp(DWORD dwEmcpProducerCobId_p);
 
@@ -686,7 +691,8 @@ tCopKernel CcmStoreRestoreDefault(void);
  * Returns kCopSuccessful; kCopSrdoNotExist (no such SRDO); kCopSrdoNmtError
  * (not OPERATIONAL, or within the first-transmission delay of 0.5 ms ×
  * node-ID after entering OPERATIONAL); kCopSrdoInvalidCfg (0x13FE is not
- * 0xA5); kCopSrdoInvalid (direction 0); kCopSrdoRxTxConflict (a receive
+ * 0xA5, or the configuration check failed when the node entered
+ * OPERATIONAL); kCopSrdoInvalid (direction 0); kCopSrdoRxTxConflict (a receive
  * SRDO); kCopSrdoDataError; the driver's code when it refuses a frame.
  * With 0, every transmit SRDO is attempted and the first error is
  * returned.
@@ -703,7 +709,8 @@ tCopKernel SrdoSend(WORD wSrdoCommuIndex_p);
  * against 0x13FF, direction, timing, COB-IDs, mapping. On an error the
  * communication index of the first bad SRDO is stored in
  * `*pwCommuIndex_p`. Returns kCopSuccessful, kCopInvalidParam (NULL), or
- * the first error: kCopSrdoCfgCrcError, kCopSrdoCfgTimingError,
+ * the first error: kCopSrdoCfgCrcError, kCopSrdoInvalidCfg (direction
+ * above 2 or a transmission type other than 254), kCopSrdoCfgTimingError,
  * kCopSrdoCfgIdError, kCopSrdoCanIdAlreadyInUse, kCopSrdoErrorMapp,
  * kCopSrdoLengthExceeded, kCopSrdoGranularityMismatch.
  *

@@ -159,7 +159,7 @@ impl WriteHooks for Hooks<'_> {
         if crate::pdo::handles(obj.index()) {
             self.pdo.check_write(od, obj, value)?;
         }
-        emcy::producer::check_error_field_write(obj, value)?;
+        emcy::producer::check_write(obj, value)?;
         self.store.check_write(od, obj, value, self.state)?;
         Ok(())
     }
@@ -781,6 +781,7 @@ impl Stack {
                 self.store.load_parts(&self.od, store::part::GEN);
                 self.lgs.reset_communication();
                 self.syncp.reset_communication();
+                self.emcy.reset_communication();
             }
             Internal::Reconfigure => {
                 self.reconfigure_modules(port, now);

@@ -326,6 +326,71 @@ fn error_field_is_cleared_by_api_and_by_writing_zero() {
 }
 
 // ---------------------------------------------------------------------------
+// COB-ID EMCY
+// ---------------------------------------------------------------------------
+
+/// 0x1014 (CiA 301 §7.5.2.21) takes only identifiers an emergency may be
+/// sent on: none of the identifiers CiA 301 §7.3.5 reserves (among them
+/// the SRDO range 0x101–0x180), bit 30 (reserved) clear. A refused value
+/// (SDO abort 0x06090030, `CcmConfigEmcp`: kCopInvalidParam) leaves the
+/// producer as it was; `CcmConfigEmcp` writes the object; bit 31 leaves
+/// the node without producer.
+#[test]
+fn emcy_cob_id_takes_only_identifiers_an_emergency_may_use() {
+    let mut net = Net::new();
+    for bad in [
+        0x0000_0000u32,
+        0x0001,
+        0x007F,
+        0x0101,
+        0x0180,
+        0x0601,
+        0x0701,
+        0x4000_00A2,
+    ] {
+        assert_eq!(
+            net.sdo_download(ID_A, 0x1014, 0, bad, 4),
+            abort(0x1014, 0, 0x0609_0030),
+            "{bad:#x}"
+        );
+        let now = net.a.now();
+        assert_eq!(
+            net.a.stack.config_emcp(bad, now),
+            Err(CopKernel::InvalidParam),
+            "{bad:#x}"
+        );
+    }
+    assert_eq!(net.a.read(0x1014, 0), 0x82);
+    net.a.send_emergency(0x1000, 0x01);
+    assert_eq!(net.frames(0x82).len(), 1);
+
+    assert_eq!(
+        net.sdo_download(ID_A, 0x1014, 0, 0xA2, 4),
+        confirmed(0x1014, 0)
+    );
+    net.a.send_emergency(0x1000, 0x01);
+    assert_eq!(net.frames(0xA2).len(), 1);
+    let now = net.a.now();
+    net.a.stack.config_emcp(0xA3, now).unwrap();
+    assert_eq!(net.a.read(0x1014, 0), 0xA3);
+    net.a.send_emergency(0x1000, 0x01);
+    assert_eq!(net.frames(0xA3).len(), 1);
+
+    net.a.stack.config_emcp(0x8000_00A3, now).unwrap();
+    assert_eq!(net.a.read(0x1014, 0), 0x8000_00A3);
+    let e = Emergency {
+        code: 0x1000,
+        register: 0x01,
+        manufacturer: [0; 5],
+    };
+    let Net { a, .. } = &mut net;
+    assert_eq!(
+        a.stack.send_emergency(&mut a.port, now, e),
+        Err(CopKernel::CobIllegalCanId)
+    );
+}
+
+// ---------------------------------------------------------------------------
 // Life guarding slave
 // ---------------------------------------------------------------------------
 

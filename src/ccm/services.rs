@@ -129,6 +129,26 @@ impl Stack {
         )
     }
 
+    /// `CcmConfigEmcp`: the emergency COB-ID (bit 31 set: no producer).
+    /// Written to 0x1014 where the dictionary has it, so that the object
+    /// shows the COB-ID in use and the producer takes it from there after
+    /// every communication reset (the NMT callback configures it at
+    /// `kNmtEvResetCommunication`, before the modules read their
+    /// objects); kept by the producer otherwise, until the next
+    /// communication reset. `kCopInvalidParam` for a COB-ID the producer
+    /// cannot use ([`emcp::usable_cob_id`]); the codes of the object write
+    /// (a read-only 0x1014: `kCopObdWriteViolation`).
+    pub fn config_emcp(&mut self, cob: u32, now: Ticks) -> CopResult {
+        if !emcp::usable_cob_id(cob) {
+            return Err(CopKernel::InvalidParam);
+        }
+        if self.od.find_entry(emcp::COB_ID_INDEX).is_some() {
+            return self.write_le(emcp::COB_ID_INDEX, &cob.to_le_bytes(), now);
+        }
+        self.emcy.set_own(&self.od, cob, self.node_id);
+        Ok(())
+    }
+
     /// The life guarding event: emergency 0x8130 with the error register's
     /// generic and communication bits, recorded in 0x1001 / 0x1003 and
     /// sent (in STOPPED, where EMCY is not sent, only recorded).

@@ -277,6 +277,53 @@ fn emergency_records_and_sends() {
     assert_eq!(decl::get(&ERR_REG), [0x11]);
 }
 
+/// Without 0x1014, `CcmConfigEmcp`'s COB-ID is the producer's own: it
+/// holds through a communication reset when the NMT callback gives it
+/// again at `kNmtEvResetCommunication` (where SYS TEC applications call
+/// it), and a reset without that call goes back to 0x80 + node-ID.
+#[test]
+fn emcy_cob_id_without_0x1014_holds_until_reset_communication() {
+    let _guard = serial();
+    let (bus, mut port, mut stack) = started(9);
+    let e = Emergency {
+        code: 0x5000,
+        register: 0x01,
+        manufacturer: [0; 5],
+    };
+    assert_eq!(
+        stack.config_emcp(0x0101, Ticks(0)),
+        Err(CopKernel::InvalidParam)
+    );
+    stack.config_emcp(0xA0, Ticks(0)).unwrap();
+    stack.send_emergency(&mut port, bus.now(), e).unwrap();
+
+    bus.inject(nmt::encode_command(NmtCs::ResetCommunication, 9));
+    stack.process(&mut port, bus.now(), |s, ev| {
+        if ev == Event::Nmt(NmtEvent::ResetCommunication) {
+            s.config_emcp(0xA1, Ticks(0)).unwrap();
+        }
+    });
+    stack.send_emergency(&mut port, bus.now(), e).unwrap();
+
+    bus.inject(nmt::encode_command(NmtCs::ResetCommunication, 9));
+    cycle(&mut stack, &mut port);
+    stack.send_emergency(&mut port, bus.now(), e).unwrap();
+    // CiA 301 7.2.7.3.1: code LSB first, register, 5 bytes.
+    let emcy: Vec<_> = bus
+        .trace()
+        .into_iter()
+        .filter(|l| l.contains("[8]  00 50 01"))
+        .collect();
+    assert_eq!(
+        emcy,
+        vec![
+            "  can0  0A0   [8]  00 50 01 00 00 00 00 00",
+            "  can0  0A1   [8]  00 50 01 00 00 00 00 00",
+            "  can0  089   [8]  00 50 01 00 00 00 00 00",
+        ]
+    );
+}
+
 #[test]
 fn srdo_dispatch_range_is_what_the_srdo_module_takes() {
     // The range test of `on_frame` agrees with the GFC and SRDO identifier

@@ -9,6 +9,7 @@ use crate::error::{CopKernel, CopResult, OdError, SdoAbort};
 use crate::od::{Object, ObjectDictionary, Staged};
 use crate::port::{CanId, CanPort, Priority, Ticks};
 use crate::wire::emcy::{self, Emergency};
+use crate::wire::pdo::{COB_INVALID, COB_NO_RTR, check_identifier};
 
 /// Error register.
 pub const ERROR_REGISTER_INDEX: u16 = 0x1001;
@@ -22,9 +23,25 @@ pub const INHIBIT_INDEX: u16 = 0x1015;
 /// Emergencies waiting for the inhibit time to pass.
 const PENDING: usize = 4;
 
+/// True when `cob` is a COB-ID EMCY this node can use (CiA 301
+/// §7.5.2.21): bit 31 set (no producer), or bit 30 (reserved) clear and an
+/// identifier that CiA 301 §7.3.5 does not reserve, 29-bit only when the
+/// driver is configured for CAN 2.0B. The reserved identifiers include
+/// 0x101–0x180, so an emergency can never be sent on an SRDO identifier.
+pub fn usable_cob_id(cob: u32) -> bool {
+    cob & COB_INVALID != 0
+        || (cob & COB_NO_RTR == 0 && check_identifier(cob, crate::config::CDRV_CAN20B).is_ok())
+}
+
+/// A write to 0x1014 with a COB-ID the producer cannot use.
+pub const REFUSE_COB_ID: OdError = OdError::new(CopKernel::InvalidParam, SdoAbort::ValueRange);
+
 /// The emergency producer.
 #[derive(Clone, Debug, Default)]
 pub struct EmcyProducer {
+    /// `CcmConfigEmcp` on a dictionary without 0x1014, until the next
+    /// communication reset.
+    own_cob: Option<u32>,
     cob: Option<CanId>,
     inhibit_ticks: u32,
     last_sent: Option<Ticks>,
@@ -35,6 +52,7 @@ impl EmcyProducer {
     /// A producer without configuration.
     pub const fn new() -> Self {
         EmcyProducer {
+            own_cob: None,
             cob: None,
             inhibit_ticks: 0,
             last_sent: None,
@@ -42,14 +60,17 @@ impl EmcyProducer {
         }
     }
 
-    /// Reads 0x1014 and 0x1015. A COB-ID of exactly 0x80 (the predefined
+    /// Reads 0x1014 and 0x1015; without 0x1014 the COB-ID is the one
+    /// `CcmConfigEmcp` gave ([`EmcyProducer::set_own`]), else the
+    /// predefined 0x80 + node-ID. A COB-ID of exactly 0x80 (the predefined
     /// connection set base, as many objdict.h files write it) gets the
-    /// node-ID added; bit 31 set disables the producer.
+    /// node-ID added; bit 31 set, or a COB-ID that is not
+    /// [`usable_cob_id`], leaves the node without producer.
     pub fn reconfigure(&mut self, od: &ObjectDictionary, node: u8) {
         let cob = od
             .read_uint(COB_ID_INDEX, 0)
             .map(|v| v as u32)
-            .unwrap_or(0x80 + u32::from(node));
+            .unwrap_or(self.own_cob.unwrap_or(0x80 + u32::from(node)));
         let cob = if cob == 0x80 {
             // The object holds the predefined base: it must show the COB-ID
             // in use (CiA 301), so the node-ID goes into the object too.
@@ -59,11 +80,7 @@ impl EmcyProducer {
         } else {
             cob
         };
-        self.cob = if cob & 0x8000_0000 != 0 {
-            None
-        } else {
-            Some(CanId::from_cob_id(cob))
-        };
+        self.cob = (cob & COB_INVALID == 0 && usable_cob_id(cob)).then(|| CanId::from_cob_id(cob));
         self.inhibit_ticks = od
             .read_uint(INHIBIT_INDEX, 0)
             .map(|v| v as u32)
@@ -75,13 +92,18 @@ impl EmcyProducer {
         self.cob
     }
 
-    /// Sets the COB-ID directly (`CcmConfigEmcp`).
-    pub fn set_cob_id(&mut self, cob: u32) {
-        self.cob = if cob & 0x8000_0000 != 0 {
-            None
-        } else {
-            Some(CanId::from_cob_id(cob))
-        };
+    /// `CcmConfigEmcp` on a dictionary without 0x1014: keeps the COB-ID
+    /// here and takes it over (the caller writes 0x1014 where it exists).
+    pub fn set_own(&mut self, od: &ObjectDictionary, cob: u32, node: u8) {
+        self.own_cob = Some(cob);
+        self.reconfigure(od, node);
+    }
+
+    /// Reset communication: forgets the COB-ID kept by
+    /// [`EmcyProducer::set_own`] (0x1014 gets its default from the
+    /// dictionary).
+    pub fn reset_communication(&mut self) {
+        self.own_cob = None;
     }
 
     /// Records the error in 0x1001/0x1003 and sends it, or queues it while
@@ -148,12 +170,16 @@ impl EmcyProducer {
 pub const REFUSE_ERROR_COUNT: OdError = OdError::new(CopKernel::InvalidParam, SdoAbort::ValueRange);
 
 /// Module hook: only 0 may be written to 0x1003 sub 0 (the other
-/// subindices follow the dictionary's access rights).
-pub fn check_error_field_write(obj: &Object, value: &Staged) -> Result<(), OdError> {
-    if obj.index() == ERROR_FIELD_INDEX && obj.sub() == 0 && value.as_u64() != Some(0) {
-        return Err(REFUSE_ERROR_COUNT);
+/// subindices follow the dictionary's access rights), and only a
+/// [`usable_cob_id`] to 0x1014.
+pub fn check_write(obj: &Object, value: &Staged) -> Result<(), OdError> {
+    match (obj.index(), obj.sub()) {
+        (ERROR_FIELD_INDEX, 0) if value.as_u64() != Some(0) => Err(REFUSE_ERROR_COUNT),
+        (COB_ID_INDEX, 0) if !value.as_u64().is_some_and(|v| usable_cob_id(v as u32)) => {
+            Err(REFUSE_COB_ID)
+        }
+        _ => Ok(()),
     }
-    Ok(())
 }
 
 /// Empties the pre-defined error field (sub 0 = 0, the entries 0) and

@@ -280,12 +280,17 @@ pub extern "C" fn CcmConfigHbp(wHbProducerTime_p: WORD) -> tCopKernel {
     code(global::with(|i| i.stack.config_hbp(wHbProducerTime_p, now)))
 }
 
-/// `CcmConfigEmcp`: sets the EMCY COB-ID (bit 31 disables the producer).
+/// `CcmConfigEmcp`: sets the EMCY COB-ID (bit 31 disables the producer),
+/// through 0x1014 where the dictionary has it; called from the NMT
+/// callback at kNmtEvResetCommunication it holds after the reset.
+/// kCopInvalidParam for a COB-ID an emergency cannot use (bit 30 set, an
+/// identifier CiA 301 reserves, 29 bits without CAN 2.0B); otherwise the
+/// codes of the object write.
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmConfigEmcp(dwEmcpProducerCobId_p: DWORD) -> tCopKernel {
+    let now = TgtClock.now();
     code(global::with(|i| {
-        i.stack.emcy_mut().set_cob_id(dwEmcpProducerCobId_p);
-        Ok(())
+        i.stack.config_emcp(dwEmcpProducerCobId_p, now)
     }))
 }
 

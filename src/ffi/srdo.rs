@@ -28,7 +28,8 @@ use crate::port::Clock;
 /// Returns kCopSuccessful; kCopSrdoNotExist (no such SRDO); kCopSrdoNmtError
 /// (not OPERATIONAL, or within the first-transmission delay of 0.5 ms ×
 /// node-ID after entering OPERATIONAL); kCopSrdoInvalidCfg (0x13FE is not
-/// 0xA5); kCopSrdoInvalid (direction 0); kCopSrdoRxTxConflict (a receive
+/// 0xA5, or the configuration check failed when the node entered
+/// OPERATIONAL); kCopSrdoInvalid (direction 0); kCopSrdoRxTxConflict (a receive
 /// SRDO); kCopSrdoDataError; the driver's code when it refuses a frame.
 /// With 0, every transmit SRDO is attempted and the first error is
 /// returned.
@@ -82,7 +83,8 @@ pub extern "C" fn SrdoSend(wSrdoCommuIndex_p: WORD) -> tCopKernel {
 /// against 0x13FF, direction, timing, COB-IDs, mapping. On an error the
 /// communication index of the first bad SRDO is stored in
 /// `*pwCommuIndex_p`. Returns kCopSuccessful, kCopInvalidParam (NULL), or
-/// the first error: kCopSrdoCfgCrcError, kCopSrdoCfgTimingError,
+/// the first error: kCopSrdoCfgCrcError, kCopSrdoInvalidCfg (direction
+/// above 2 or a transmission type other than 254), kCopSrdoCfgTimingError,
 /// kCopSrdoCfgIdError, kCopSrdoCanIdAlreadyInUse, kCopSrdoErrorMapp,
 /// kCopSrdoLengthExceeded, kCopSrdoGranularityMismatch.
 ///
