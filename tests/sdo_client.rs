@@ -203,4 +203,36 @@ fn bad_arguments_give_codes() {
         stack.define_sdo_client(port, 0x1281, bad),
         Err(cop::CopKernel::SdocInvalidParam)
     );
+    // Identifiers CiA 301 §7.3.5 reserves for other services: the SRDO
+    // pair of node 1 (0x101 / 0x102), the GFC (0x001), NMT error control
+    // of node 2 (0x702), in either direction; the default SDO channels
+    // are SDO's own.
+    for (tx, rx) in [
+        (0x101, 0x582),
+        (0x602, 0x102),
+        (0x001, 0x582),
+        (0x602, 0x702),
+    ] {
+        let reserved = ClientParam {
+            tx_cob: tx,
+            rx_cob: rx,
+            server_node: 2,
+            timeout_ticks: 0,
+        };
+        assert_eq!(
+            stack.define_sdo_client(port, 0x1281, reserved),
+            Err(cop::CopKernel::SdocInvalidParam),
+            "{tx:#x} / {rx:#x}"
+        );
+    }
+    let default_channel = ClientParam {
+        tx_cob: 0x603,
+        rx_cob: 0x583,
+        server_node: 3,
+        timeout_ticks: 0,
+    };
+    assert_eq!(
+        stack.define_sdo_client(port, 0x1281, default_channel),
+        Ok(())
+    );
 }

@@ -1017,6 +1017,14 @@ fn explicit_and_changed_cob_ids_from_0x1200() {
         [0x60, 0x00, 0x12, 0x02, 0, 0, 0, 0]
     );
     assert_eq!(rig.sdo_on(0x640, 0x5C1, READ_1000), DEVICE_TYPE_RESPONSE);
+    // An identifier CiA 301 §7.3.5 reserves for another service (here
+    // COB-ID 2 of SRDO 1 of node 1) is refused (abort 0x06090030, value
+    // range) and changes nothing.
+    assert_eq!(
+        rig.sdo_on(0x640, 0x5C1, [0x23, 0x00, 0x12, 0x02, 0x02, 0x01, 0, 0]),
+        [0x80, 0x00, 0x12, 0x02, 0x30, 0x00, 0x09, 0x06]
+    );
+    assert_eq!(rig.sdo_on(0x640, 0x5C1, READ_1000), DEVICE_TYPE_RESPONSE);
     // Bit 31 (CiA 301 object 1200h: not valid) switches the server off.
     rig.set(0x1200, 1, &0x8000_0640u32.to_le_bytes());
     rig.sdo_silent(CanFrame::new(CanId::std_masked(0x640), &READ_1000));

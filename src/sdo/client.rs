@@ -162,7 +162,7 @@ pub struct SdoClient {
 crate::od::decl::default_is_new!(SdoClient);
 
 fn cob_id(v: u32) -> Option<CanId> {
-    if v & 0x8000_0000 != 0 {
+    if v & 0x8000_0000 != 0 || !super::usable_cob_id(v) {
         None
     } else {
         Some(CanId::from_cob_id(v))
@@ -234,10 +234,13 @@ impl SdoClient {
     /// Defines or updates a channel (`CcmSdocDefineClientTab`). Changing a
     /// channel with a running transfer gives kCopSdocBusy; an index outside
     /// 0x1280.. + capacity kCopSdocClientNotExist; COB-IDs above 11 bits
-    /// (without bit 29) kCopSdocInvalidParam.
+    /// (without bit 29) or identifiers of another service
+    /// ([`super::usable_cob_id`]) kCopSdocInvalidParam.
     pub fn define(&mut self, index: u16, p: ClientParam) -> CopResult {
         for cob in [p.tx_cob, p.rx_cob] {
-            if cob & 0x8000_0000 == 0 && cob & 0x2000_0000 == 0 && cob > 0x7FF {
+            if cob & 0x8000_0000 == 0 && cob & 0x2000_0000 == 0 && cob > 0x7FF
+                || !super::usable_cob_id(cob)
+            {
                 return Err(CopKernel::SdocInvalidParam);
             }
         }

@@ -4,3 +4,77 @@ pub mod client;
 pub mod server;
 pub use client::SdoClient;
 pub use server::SdoServer;
+
+use crate::error::{CopKernel, OdError, SdoAbort};
+use crate::od::{Object, Staged};
+use crate::wire::pdo::is_restricted;
+
+/// First SDO parameter object (server 0x1200..=0x127F, client
+/// 0x1280..=0x12FF).
+pub const PARAMETER_FIRST: u16 = 0x1200;
+/// Last SDO parameter object.
+pub const PARAMETER_LAST: u16 = 0x12FF;
+
+/// True when an SDO channel may use the COB-ID `v` (sub 1 or 2 of its
+/// parameter object, CiA 301 §7.5.2.33 / §7.5.2.34): bit 31 set (the
+/// channel does not exist), a 29-bit identifier (bit 29), or an 11-bit
+/// identifier that CiA 301 §7.3.5 does not reserve for another service.
+/// The default SDO channels 0x581–0x5FF and 0x601–0x67F, reserved for SDO
+/// itself, are allowed; NMT, the GFC and SRDO identifiers (0x001,
+/// 0x101–0x180), NMT error control and the other reserved ranges are not,
+/// so that no SDO frame can be sent on a safety identifier. Bit 30
+/// (dynamic allocation) is left to the channel.
+pub fn usable_cob_id(v: u32) -> bool {
+    if v & 0x8000_0000 != 0 || v & 0x2000_0000 != 0 {
+        return true;
+    }
+    match u16::try_from(v & !0x4000_0000) {
+        Ok(id) if id <= 0x7FF => !is_restricted(id) || matches!(id, 0x581..=0x5FF | 0x601..=0x67F),
+        _ => false,
+    }
+}
+
+/// A write of a COB-ID an SDO channel cannot use to sub 1 or 2 of an SDO
+/// parameter object.
+pub const REFUSE_COB_ID: OdError = OdError::new(CopKernel::InvalidParam, SdoAbort::ValueRange);
+
+/// Module hook: sub 1 and 2 of the SDO parameter objects take only a
+/// [`usable_cob_id`].
+pub fn check_write(obj: &Object, value: &Staged) -> Result<(), OdError> {
+    let cob =
+        (PARAMETER_FIRST..=PARAMETER_LAST).contains(&obj.index()) && matches!(obj.sub(), 1 | 2);
+    if cob && !value.as_u64().is_some_and(|v| usable_cob_id(v as u32)) {
+        return Err(REFUSE_COB_ID);
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::usable_cob_id;
+
+    #[test]
+    fn sdo_cob_ids_keep_off_the_identifiers_of_other_services() {
+        // CiA 301 §7.3.5: the default SDO channels are SDO's own.
+        for ok in [
+            0x581, 0x5FF, 0x601, 0x67F, 0x580, 0x600, 0x080, 0x181, 0x6DF,
+        ] {
+            assert!(usable_cob_id(ok), "{ok:#x}");
+        }
+        // Bit 30 is the channel's; bit 31 (no channel) and 29-bit
+        // identifiers are not 11-bit identifiers of another service.
+        for ok in [0x4000_0601, 0x8000_0101, 0x8000_0000, 0x2000_0101] {
+            assert!(usable_cob_id(ok), "{ok:#x}");
+        }
+        // NMT, GFC and SRDO, NMT error control, the other reserved ranges,
+        // and identifiers beyond 11 bits.
+        for bad in [
+            0x000, 0x001, 0x07F, 0x101, 0x180, 0x6E0, 0x6FF, 0x701, 0x77F, 0x780, 0x7FF,
+        ] {
+            assert!(!usable_cob_id(bad), "{bad:#x}");
+            assert!(!usable_cob_id(0x4000_0000 | bad), "{bad:#x} with bit 30");
+        }
+        assert!(!usable_cob_id(0x800));
+        assert!(!usable_cob_id(0x1000_0601));
+    }
+}

@@ -83,7 +83,8 @@
 //! means "base + node-ID": many objdict.h files declare the base because
 //! the node-ID is not known at compile time. Bit 31 set in either sub
 //! disables the server (CiA 301 object 1200h: both COB-IDs must be valid); so
-//! does an 11-bit COB-ID with bits 28..11 set.
+//! does an 11-bit COB-ID with bits 28..11 set or an identifier of another
+//! service ([`super::usable_cob_id`]: never an SRDO or GFC identifier).
 
 use super::block::{BlockRx, BlockTx, valid_blksize};
 use crate::config::{SDO_BLOCKSIZE_DOWNLOAD, SDOS_BUFFER_SIZE, SDOS_DEFAULT_TIMEOUT};
@@ -928,7 +929,7 @@ fn cob_id(od: &ObjectDictionary, sub: u8, base: u16, node: u8) -> Option<CanId> 
         return default;
     };
     let v = (raw & 0xFFFF_FFFF) as u32;
-    if v & COB_ID_INVALID != 0 {
+    if v & COB_ID_INVALID != 0 || !super::usable_cob_id(v) {
         return None;
     }
     if v == u32::from(base) {

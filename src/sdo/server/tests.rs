@@ -743,6 +743,12 @@ fn cob_ids_from_0x1200() {
     assert_eq!(ids(od_1200!(0x605, 0x8000_0585u32), 5), (None, None));
     // An 11-bit COB-ID with bits above 10 set is not valid.
     assert_eq!(ids(od_1200!(0x1605, 0x585), 5), (None, None));
+    // Identifiers CiA 301 §7.3.5 reserves for other services (here the
+    // SRDO 1 pair of node 1 and the GFC) disable the server in either
+    // direction.
+    assert_eq!(ids(od_1200!(0x101, 0x585), 5), (None, None));
+    assert_eq!(ids(od_1200!(0x605, 0x102), 5), (None, None));
+    assert_eq!(ids(od_1200!(0x001, 0x585), 5), (None, None));
 }
 
 #[test]
