@@ -277,6 +277,14 @@ fn emergency_records_and_sends() {
     assert_eq!(decl::get(&ERR_REG), [0x11]);
 }
 
+/// Emergency 0x5000 (CiA 301 table 21: device hardware), error register
+/// bit 0.
+const HARDWARE_ERROR: Emergency = Emergency {
+    code: 0x5000,
+    register: 0x01,
+    manufacturer: [0; 5],
+};
+
 /// Without 0x1014, `CcmConfigEmcp`'s COB-ID is the producer's own: it
 /// holds through a communication reset when the NMT callback gives it
 /// again at `kNmtEvResetCommunication` (where SYS TEC applications call
@@ -285,11 +293,7 @@ fn emergency_records_and_sends() {
 fn emcy_cob_id_without_0x1014_holds_until_reset_communication() {
     let _guard = serial();
     let (bus, mut port, mut stack) = started(9);
-    let e = Emergency {
-        code: 0x5000,
-        register: 0x01,
-        manufacturer: [0; 5],
-    };
+    let e = HARDWARE_ERROR;
     assert_eq!(
         stack.config_emcp(0x0101, Ticks(0)),
         Err(CopKernel::InvalidParam)
