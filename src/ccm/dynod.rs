@@ -10,14 +10,19 @@ use super::Stack;
 use crate::error::{CopKernel, CopResult};
 use crate::od::dynamic::{BuildInfo, DynPool, Installed, Target};
 use crate::od::{ByteOrder, ObdEntry, ObjectDictionary};
-use crate::pdo::Channel;
+use crate::pdo::{RxChannel, TxChannel};
 use crate::port::{CanPort, Ticks};
 
 impl Target for Stack {
-    type Channel = Channel;
+    type RxChannel = RxChannel;
+    type TxChannel = TxChannel;
 
-    fn new_channel() -> Channel {
-        Channel::new()
+    fn new_rx_channel() -> RxChannel {
+        RxChannel::new()
+    }
+
+    fn new_tx_channel() -> TxChannel {
+        TxChannel::new()
     }
 
     fn od(&self) -> &ObjectDictionary {
@@ -44,8 +49,8 @@ impl Target for Stack {
 
     fn attach_pooled(
         &mut self,
-        rx: Option<&'static mut [Channel]>,
-        tx: Option<&'static mut [Channel]>,
+        rx: Option<&'static mut [RxChannel]>,
+        tx: Option<&'static mut [TxChannel]>,
     ) {
         self.pdo_mut().attach_pooled(rx, tx);
     }

@@ -17,7 +17,7 @@
 //! |---|---|
 //! | index table (`tObdEntry`): the application's user part merged with the new objects, sorted | (user entries + new indices) × `size_of::<ObdEntry>()` (16 bytes on 32-bit targets) |
 //! | subindex tables (`tObdSubEntry`) of the new objects | new subindices × `size_of::<ObdSubEntry>()` (16 bytes on 32-bit targets) |
-//! | PDO channels, only when `PDO_MAX_RXPDO_IN_OBD` / `PDO_MAX_TXPDO_IN_OBD` is 0 and the container has PDOs of that direction | (highest RPDO number + 1 + highest TPDO number + 1) × the state of one PDO ([`crate::pdo::channel_size`]) |
+//! | PDO channels, only when `PDO_MAX_RXPDO_IN_OBD` / `PDO_MAX_TXPDO_IN_OBD` is 0 and the container has PDOs of that direction: the RPDOs', then the TPDOs' | (highest RPDO number + 1) × the state of one RPDO + (highest TPDO number + 1) × the state of one TPDO, which includes its change watch ([`crate::pdo::channel_size`] of each direction) |
 //! | variables that are not in the process image | their C width; strings capacity + 1 |
 //! | snapshot of the existing values the build overwrites | 5 bytes + the value per write (undo of a refused build) |
 //! | copy of the container's index segment | its size (the values re-applied after NMT resets) |

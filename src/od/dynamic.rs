@@ -133,10 +133,14 @@ pub use pool::BuildError;
 /// tables out; the stack (`src/ccm/dynod.rs`) implements this interface
 /// and so applies the result without the dictionary knowing the stack.
 pub(crate) trait Target {
-    /// The state of one PDO (the PDO module's channel).
-    type Channel: 'static;
-    /// A PDO channel as the PDO module starts it.
-    fn new_channel() -> Self::Channel;
+    /// The state of one RPDO (the PDO module's receive channel).
+    type RxChannel: 'static;
+    /// The state of one TPDO (the PDO module's transmit channel).
+    type TxChannel: 'static;
+    /// An RPDO channel as the PDO module starts it.
+    fn new_rx_channel() -> Self::RxChannel;
+    /// A TPDO channel as the PDO module starts it.
+    fn new_tx_channel() -> Self::TxChannel;
     /// The stack's dictionary.
     fn od(&self) -> &ObjectDictionary;
     /// The stack's dictionary, to install a new user part.
@@ -151,8 +155,8 @@ pub(crate) trait Target {
     /// Hands the PDO module channels from the pool.
     fn attach_pooled(
         &mut self,
-        rx: Option<&'static mut [Self::Channel]>,
-        tx: Option<&'static mut [Self::Channel]>,
+        rx: Option<&'static mut [Self::RxChannel]>,
+        tx: Option<&'static mut [Self::TxChannel]>,
     );
     /// Takes the pooled channels back from the PDO module.
     fn detach_pooled(&mut self, port: &mut impl CanPort);

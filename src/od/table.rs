@@ -762,8 +762,8 @@ mod pool {
                 Plan::new_blamed(c, stack.od(), image_len, &mut [], blame)?
             };
             let original = stack.od().part(Part::User);
-            let layout =
-                Layout::of::<T::Channel>(&plan, original.len()).ok_or(CopKernel::DynNoMemory)?;
+            let layout = Layout::of::<T::RxChannel, T::TxChannel>(&plan, original.len())
+                .ok_or(CopKernel::DynNoMemory)?;
             if layout.end > N {
                 return Err(CopKernel::DynNoMemory);
             }
@@ -941,22 +941,24 @@ mod pool {
             *stack.od_mut() = candidate;
             let pooled = layout.rx_channels + layout.tx_channels > 0;
             if pooled {
-                // SAFETY: chan_at is aligned for the channel type and chan_at + channels
-                // * size <= data_at <= N (Layout::of); the region is claimed
-                // pool memory nobody else refers to. Every slot is written
-                // before the slices are made.
+                // SAFETY: rx_at is aligned for the RPDO channel type and tx_at
+                // for the TPDO one; rx_at + rx_channels * its size <= tx_at and
+                // tx_at + tx_channels * its size <= data_at <= N (Layout::of),
+                // so the two regions do not overlap; they are claimed pool
+                // memory nobody else refers to. Every slot is written before
+                // the slices are made.
                 let (rx, tx) = unsafe {
-                    let first = base.add(layout.chan_at) as *mut T::Channel;
-                    let total = layout.rx_channels + layout.tx_channels;
-                    for i in 0..total {
-                        first.add(i).write(T::new_channel());
+                    let rx_first = base.add(layout.rx_at) as *mut T::RxChannel;
+                    for i in 0..layout.rx_channels {
+                        rx_first.add(i).write(T::new_rx_channel());
+                    }
+                    let tx_first = base.add(layout.tx_at) as *mut T::TxChannel;
+                    for i in 0..layout.tx_channels {
+                        tx_first.add(i).write(T::new_tx_channel());
                     }
                     (
-                        core::slice::from_raw_parts_mut(first, layout.rx_channels),
-                        core::slice::from_raw_parts_mut(
-                            first.add(layout.rx_channels),
-                            layout.tx_channels,
-                        ),
+                        core::slice::from_raw_parts_mut(rx_first, layout.rx_channels),
+                        core::slice::from_raw_parts_mut(tx_first, layout.tx_channels),
                     )
                 };
                 stack.attach_pooled(

@@ -77,6 +77,7 @@ mod tests;
 mod watch;
 
 pub use param::{PdoParam, StaticPdoParam};
+use watch::{NoWatch, Watch, Watching};
 
 use core::sync::atomic::{AtomicU8, Ordering};
 
@@ -248,11 +249,12 @@ impl Config {
     }
 }
 
-/// One PDO: configuration, application attachments and run-time state.
+/// One PDO: configuration, application attachments and run-time state;
+/// `W` is its change watch ([`TxChannel`], [`RxChannel`]).
 /// `pub(crate)` so that the dynamic OD can lay channels out in its pool
 /// ([`Pdo::attach_pooled`]).
 #[derive(Clone, Debug)]
-pub(crate) struct Channel {
+pub(crate) struct Channel<W> {
     cfg: Config,
     /// `CcmDefineStaticPdoTab`: the payload is this byte block, not a
     /// mapping.
@@ -269,17 +271,23 @@ pub(crate) struct Channel {
     rtr_pending: bool,
     sampled: Option<Payload>,
     last_sent: Option<Payload>,
-    /// `CCM_USE_PDO_CHECK_VAR`: the resolved mapping and its bytes.
-    watch: watch::Watch,
+    /// `CCM_USE_PDO_CHECK_VAR`: the resolved mapping and its bytes (a
+    /// TPDO's; an RPDO has none).
+    watch: W,
     // RPDO state.
     sync_buffer: Option<Payload>,
     pending: Option<Payload>,
     deadline: Option<Ticks>,
 }
 
-impl Channel {
+/// The channel of an RPDO: without change watch.
+pub(crate) type RxChannel = Channel<NoWatch>;
+/// The channel of a TPDO: with the change watch of `CCM_USE_PDO_CHECK_VAR`.
+pub(crate) type TxChannel = Channel<Watch>;
+
+impl<W: Watching> Channel<W> {
     /// A channel without configuration.
-    pub(crate) const fn new() -> Channel {
+    pub(crate) const fn new() -> Channel<W> {
         Channel {
             cfg: Config::new(),
             static_data: None,
@@ -293,7 +301,7 @@ impl Channel {
             rtr_pending: false,
             sampled: None,
             last_sent: None,
-            watch: watch::Watch::new(),
+            watch: W::NEW,
             sync_buffer: None,
             pending: None,
             deadline: None,
@@ -329,6 +337,51 @@ impl Channel {
     fn set_cfg(&mut self, cfg: Config) {
         self.cfg = cfg;
         self.watch.forget();
+    }
+
+    /// Takes over the parameters after a write to its objects: `cfg` as
+    /// read again, `event_time` when the write was to the event time
+    /// (communication sub 5). True when the COB-ID changed.
+    fn after_store(
+        &mut self,
+        cfg: Config,
+        event_time: bool,
+        operational: bool,
+        now: Ticks,
+    ) -> bool {
+        let was = self.cfg.cob;
+        let was_type = self.cfg.tx_type;
+        self.set_cfg(cfg);
+        let cob_changed = self.cfg.cob != was;
+        if self.cfg.cob.is_none() {
+            self.reset_runtime();
+        } else if (cob_changed || self.cfg.tx_type != was_type) && operational {
+            self.start(now);
+        } else if event_time && operational {
+            // A new event time takes effect from now on.
+            self.event_deadline = (tx_type::is_event(self.cfg.tx_type) && self.cfg.event_ms > 0)
+                .then(|| now.plus_ms(u32::from(self.cfg.event_ms)));
+        }
+        cob_changed
+    }
+
+    /// [`Pdo::attach`] for this channel.
+    fn attach(
+        &mut self,
+        notify: Option<bool>,
+        static_data: Option<Option<&'static [AtomicU8]>>,
+    ) -> CopResult {
+        if let Some(n) = notify {
+            self.notify = n;
+        }
+        if let Some(d) = static_data {
+            if d.is_some_and(|d| d.len() > 8) {
+                return Err(CopKernel::PdoLengthExceeded);
+            }
+            self.static_data = d;
+            self.watch.forget();
+        }
+        Ok(())
     }
 
     /// The PDO can carry data: valid and with a usable payload definition.
@@ -392,22 +445,27 @@ pub(crate) struct Parts<'a> {
     pub queue: &'a mut ActionQueue,
 }
 
-/// Bytes of the state of one PDO: what a dynamic OD's pool holds per PDO
-/// channel it provides (`PDO_MAX_RXPDO_IN_OBD` / `PDO_MAX_TXPDO_IN_OBD` 0).
-pub const fn channel_size() -> usize {
-    core::mem::size_of::<Channel>()
+/// Bytes of the state of one PDO of direction `dir`: what a dynamic OD's
+/// pool holds per PDO channel it provides (`PDO_MAX_RXPDO_IN_OBD` /
+/// `PDO_MAX_TXPDO_IN_OBD` 0). A TPDO's includes its change watch
+/// (`CCM_USE_PDO_CHECK_VAR`), an RPDO's does not.
+pub const fn channel_size(dir: Direction) -> usize {
+    match dir {
+        Direction::Rx => core::mem::size_of::<RxChannel>(),
+        Direction::Tx => core::mem::size_of::<TxChannel>(),
+    }
 }
 
 /// The channels of one direction: the `N` of the build configuration, or
 /// those a dynamic OD laid out in its pool for the PDOs its container
 /// creates beyond them (then these replace the fixed ones).
 #[derive(Debug)]
-struct Channels<const N: usize> {
-    fixed: [Channel; N],
-    pooled: Option<&'static mut [Channel]>,
+struct Channels<const N: usize, W: 'static> {
+    fixed: [Channel<W>; N],
+    pooled: Option<&'static mut [Channel<W>]>,
 }
 
-impl<const N: usize> Channels<N> {
+impl<const N: usize, W: Watching + 'static> Channels<N, W> {
     const fn new() -> Self {
         Channels {
             fixed: [const { Channel::new() }; N],
@@ -416,9 +474,9 @@ impl<const N: usize> Channels<N> {
     }
 }
 
-impl<const N: usize> core::ops::Deref for Channels<N> {
-    type Target = [Channel];
-    fn deref(&self) -> &[Channel] {
+impl<const N: usize, W: 'static> core::ops::Deref for Channels<N, W> {
+    type Target = [Channel<W>];
+    fn deref(&self) -> &[Channel<W>] {
         match &self.pooled {
             Some(p) => p,
             None => &self.fixed,
@@ -426,8 +484,8 @@ impl<const N: usize> core::ops::Deref for Channels<N> {
     }
 }
 
-impl<const N: usize> core::ops::DerefMut for Channels<N> {
-    fn deref_mut(&mut self) -> &mut [Channel] {
+impl<const N: usize, W: 'static> core::ops::DerefMut for Channels<N, W> {
+    fn deref_mut(&mut self) -> &mut [Channel<W>] {
         match &mut self.pooled {
             Some(p) => p,
             None => &mut self.fixed,
@@ -442,8 +500,8 @@ impl<const N: usize> core::ops::DerefMut for Channels<N> {
 /// ([`Pdo::attach_pooled`]).
 #[derive(Debug)]
 pub struct Pdo {
-    rx: Channels<PDO_MAX_RXPDO_IN_OBD>,
-    tx: Channels<PDO_MAX_TXPDO_IN_OBD>,
+    rx: Channels<PDO_MAX_RXPDO_IN_OBD, NoWatch>,
+    tx: Channels<PDO_MAX_TXPDO_IN_OBD, Watch>,
     sync: SyncConsumer,
     operational: bool,
     lock_depth: u8,
@@ -489,8 +547,8 @@ impl Pdo {
     /// reconfigures the module afterwards.
     pub(crate) fn attach_pooled(
         &mut self,
-        rx: Option<&'static mut [Channel]>,
-        tx: Option<&'static mut [Channel]>,
+        rx: Option<&'static mut [RxChannel]>,
+        tx: Option<&'static mut [TxChannel]>,
     ) {
         self.wake();
         self.cursor = 0;
@@ -514,7 +572,10 @@ impl Pdo {
     pub(crate) fn detach_pooled(&mut self, port: &mut impl CanPort) {
         self.wake();
         // The identifiers the pooled channels subscribed go with them.
-        for ch in self.rx.iter_mut().chain(self.tx.iter_mut()) {
+        for ch in self.rx.iter_mut() {
+            update_subscription(port, &mut ch.subscribed, None);
+        }
+        for ch in self.tx.iter_mut() {
             update_subscription(port, &mut ch.subscribed, None);
         }
         self.resubscribe = true;
@@ -545,19 +606,12 @@ impl Pdo {
         self.quiet = false;
     }
 
-    fn channel(&self, p: PdoIndex) -> Option<&Channel> {
+    /// The parameters of a PDO that has a channel.
+    fn config(&self, p: PdoIndex) -> Option<&Config> {
         let n = usize::from(p.number);
         match p.dir {
-            Direction::Rx => self.rx.get(n),
-            Direction::Tx => self.tx.get(n),
-        }
-    }
-
-    fn channel_mut(&mut self, p: PdoIndex) -> Option<&mut Channel> {
-        let n = usize::from(p.number);
-        match p.dir {
-            Direction::Rx => self.rx.get_mut(n),
-            Direction::Tx => self.tx.get_mut(n),
+            Direction::Rx => self.rx.get(n).map(|c| &c.cfg),
+            Direction::Tx => self.tx.get(n).map(|c| &c.cfg),
         }
     }
 
@@ -568,28 +622,28 @@ impl Pdo {
         if p.role != Role::Commu {
             return None;
         }
-        self.channel(p).filter(|c| c.cfg.present).map(|_| p)
+        self.config(p).filter(|c| c.present).map(|_| p)
     }
 
     /// The COB-ID of a served PDO when it is valid.
     pub fn cob_id(&self, commu_index: u16) -> Option<CanId> {
         self.served(commu_index)
-            .and_then(|p| self.channel(p))
-            .and_then(|c| c.cfg.cob)
+            .and_then(|p| self.config(p))
+            .and_then(|c| c.cob)
     }
 
     /// Identifier and frame length of PDO number `n` (0-based, in the
     /// order 0x1400+n / 0x1800+n) when it is served and valid
     /// (`CcmCobGetParam`).
     pub fn cob_entry(&self, dir: Direction, n: usize) -> Option<(CanId, u8)> {
-        let c = match dir {
-            Direction::Rx => self.rx.get(n),
-            Direction::Tx => self.tx.get(n),
+        let (cfg, len) = match dir {
+            Direction::Rx => self.rx.get(n).map(|c| (&c.cfg, c.len())),
+            Direction::Tx => self.tx.get(n).map(|c| (&c.cfg, c.len())),
         }?;
-        if !c.cfg.present {
+        if !cfg.present {
             return None;
         }
-        c.cfg.cob.map(|id| (id, c.len()))
+        cfg.cob.map(|id| (id, len))
     }
 
     /// The SYNC COB-ID in use.
@@ -696,23 +750,19 @@ impl Pdo {
             return;
         };
         let operational = self.operational;
-        let Some(ch) = self.channel_mut(p) else {
-            return;
+        let n = usize::from(p.number);
+        let event_time = p.role == Role::Commu && obj.sub() == 5;
+        let cob_changed = match p.dir {
+            Direction::Rx => self
+                .rx
+                .get_mut(n)
+                .map(|ch| ch.after_store(load(od, p.dir, n), event_time, operational, now)),
+            Direction::Tx => self
+                .tx
+                .get_mut(n)
+                .map(|ch| ch.after_store(load(od, p.dir, n), event_time, operational, now)),
         };
-        let was = ch.cfg.cob;
-        let was_type = ch.cfg.tx_type;
-        ch.set_cfg(load(od, p.dir, usize::from(p.number)));
-        let cob_changed = ch.cfg.cob != was;
-        if ch.cfg.cob.is_none() {
-            ch.reset_runtime();
-        } else if (cob_changed || ch.cfg.tx_type != was_type) && operational {
-            ch.start(now);
-        } else if p.role == Role::Commu && obj.sub() == 5 && operational {
-            // A new event time takes effect from now on.
-            ch.event_deadline = (tx_type::is_event(ch.cfg.tx_type) && ch.cfg.event_ms > 0)
-                .then(|| now.plus_ms(u32::from(ch.cfg.event_ms)));
-        }
-        if cob_changed {
+        if cob_changed == Some(true) {
             self.resubscribe = true;
         }
     }
@@ -724,7 +774,7 @@ impl Pdo {
     /// the configuration.
     pub fn covers(&self, od: &ObjectDictionary, commu_index: u16) -> Option<PdoIndex> {
         let p = PdoIndex::of(commu_index).filter(|p| p.role == Role::Commu)?;
-        self.channel(p)?;
+        self.config(p)?;
         od.find_entry(commu_index).map(|_| p)
     }
 
@@ -740,18 +790,12 @@ impl Pdo {
     ) -> CopResult {
         self.wake();
         let p = self.covers(od, commu_index).ok_or(CopKernel::PdoNotExist)?;
-        let ch = self.channel_mut(p).ok_or(CopKernel::PdoNotExist)?;
-        if let Some(n) = notify {
-            ch.notify = n;
+        let n = usize::from(p.number);
+        match p.dir {
+            Direction::Rx => self.rx.get_mut(n).map(|ch| ch.attach(notify, static_data)),
+            Direction::Tx => self.tx.get_mut(n).map(|ch| ch.attach(notify, static_data)),
         }
-        if let Some(d) = static_data {
-            if d.is_some_and(|d| d.len() > 8) {
-                return Err(CopKernel::PdoLengthExceeded);
-            }
-            ch.static_data = d;
-            ch.watch.forget();
-        }
-        Ok(())
+        .unwrap_or(Err(CopKernel::PdoNotExist))
     }
 
     /// Reacts to an NMT state change: PDOs run in OPERATIONAL only.
@@ -767,7 +811,10 @@ impl Pdo {
             }
             self.sync.last = None;
         } else if !operational {
-            for ch in self.tx.iter_mut().chain(self.rx.iter_mut()) {
+            for ch in self.tx.iter_mut() {
+                ch.reset_runtime();
+            }
+            for ch in self.rx.iter_mut() {
                 ch.reset_runtime();
             }
         }
@@ -801,7 +848,7 @@ impl Pdo {
             .served(commu_index)
             .filter(|p| p.dir == Direction::Tx)
             .ok_or(CopKernel::PdoNotExist)?;
-        if let Some(ch) = self.channel_mut(p) {
+        if let Some(ch) = self.tx.get_mut(usize::from(p.number)) {
             ch.event_pending = true;
         }
         Ok(())
@@ -891,7 +938,10 @@ impl Pdo {
         if state != NmtState::Operational {
             return Err(CopKernel::NmtStateError);
         }
-        let ch = self.channel_mut(p).ok_or(CopKernel::PdoNotExist)?;
+        let ch = self
+            .tx
+            .get_mut(usize::from(p.number))
+            .ok_or(CopKernel::PdoNotExist)?;
         if !ch.usable() {
             return Err(CopKernel::PdoErrorSend);
         }
@@ -1345,7 +1395,7 @@ fn predefined_node_id(od: &ObjectDictionary, dir: Direction, n: usize, node: u8)
 }
 
 /// Samples a TPDO's payload from its mapped objects (or static block).
-fn sample(od: &ObjectDictionary, ch: &Channel) -> Result<Payload, CopKernel> {
+fn sample(od: &ObjectDictionary, ch: &TxChannel) -> Result<Payload, CopKernel> {
     let mut p = Payload::default();
     if let Some(d) = ch.static_data {
         for (o, b) in p.data.iter_mut().zip(d.iter()) {
@@ -1375,7 +1425,7 @@ fn sample(od: &ObjectDictionary, ch: &Channel) -> Result<Payload, CopKernel> {
 /// [`sample`] for the comparison of `CCM_USE_PDO_CHECK_VAR`: without
 /// sampling while the watched bytes are unchanged.
 #[inline]
-fn watched_sample(od: &ObjectDictionary, ch: &mut Channel) -> Result<Payload, CopKernel> {
+fn watched_sample(od: &ObjectDictionary, ch: &mut TxChannel) -> Result<Payload, CopKernel> {
     if let Some(p) = ch.watch.unchanged() {
         return Ok(p);
     }
@@ -1396,7 +1446,7 @@ fn watched_sample(od: &ObjectDictionary, ch: &mut Channel) -> Result<Payload, Co
 /// Writes an RPDO's payload into its mapped objects: every value is
 /// converted and checked first, then all are stored, so either all mapped
 /// variables change or none.
-fn apply(od: &ObjectDictionary, ch: &Channel, p: &Payload) -> Result<(), CopKernel> {
+fn apply(od: &ObjectDictionary, ch: &RxChannel, p: &Payload) -> Result<(), CopKernel> {
     if let Some(d) = ch.static_data {
         let src = p.bytes();
         if src.len() < d.len() {
@@ -1443,7 +1493,7 @@ fn apply(od: &ObjectDictionary, ch: &Channel, p: &Payload) -> Result<(), CopKern
     Ok(())
 }
 
-fn inhibited(ch: &Channel, now: Ticks) -> bool {
+fn inhibited(ch: &TxChannel, now: Ticks) -> bool {
     match ch.last_tx {
         Some(t) if ch.cfg.inhibit_ticks > 0 => now.since(t) < ch.cfg.inhibit_ticks,
         _ => false,
@@ -1451,7 +1501,7 @@ fn inhibited(ch: &Channel, now: Ticks) -> bool {
 }
 
 /// Puts a TPDO on the bus and restarts its timers.
-fn transmit(ch: &mut Channel, port: &mut impl CanPort, p: Payload, now: Ticks) -> CopResult {
+fn transmit(ch: &mut TxChannel, port: &mut impl CanPort, p: Payload, now: Ticks) -> CopResult {
     let id = ch.cfg.cob.ok_or(CopKernel::PdoErrorSend)?;
     port.send(&wire::encode_pdo(id, &p.data, p.len), Priority::Low)?;
     ch.last_tx = Some(now);

@@ -299,7 +299,7 @@ fn sync_cob_id_rules() {
     write(&od, 0x1007, 0, 5000).unwrap();
 }
 
-fn channel(od: &ObjectDictionary, dir: Direction, entries: &[u32]) -> Channel {
+fn channel<W: Watching>(od: &ObjectDictionary, dir: Direction, entries: &[u32]) -> Channel<W> {
     let mut ch = Channel::new();
     ch.cfg.present = true;
     ch.cfg.cob = Some(CanId::std_masked(0x181));

@@ -23,6 +23,35 @@ use super::Payload;
 use crate::od::{ObdVarEntry, ObjectDictionary, Storage};
 use crate::wire::pdo::MapEntry;
 
+/// The change watch a PDO channel carries: a TPDO's is a [`Watch`], an
+/// RPDO has none ([`NoWatch`]), so that receive channels do not hold the
+/// pieces of a mapping they never compare.
+pub(crate) trait Watching {
+    /// A watch without resolution.
+    const NEW: Self;
+    /// Drops the resolution: the mapping or the dictionary may have
+    /// changed.
+    fn forget(&mut self);
+}
+
+/// The watch of an RPDO: nothing to resolve.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct NoWatch;
+
+impl Watching for NoWatch {
+    const NEW: Self = NoWatch;
+    #[inline]
+    fn forget(&mut self) {}
+}
+
+impl Watching for Watch {
+    const NEW: Self = Watch::new();
+    #[inline]
+    fn forget(&mut self) {
+        Watch::forget(self);
+    }
+}
+
 /// Pieces a watch holds; a mapping with more variables in RAM is compared
 /// by sampling it (as without a watch).
 const PIECES: usize = 8;
@@ -121,7 +150,7 @@ impl Watch {
     /// those of the last sample; `None` when they differ (or nothing was
     /// taken): then sample, and [`Watch::take`] the result.
     #[inline]
-    pub(crate) fn unchanged(&self) -> Option<Payload> {
+    pub(super) fn unchanged(&self) -> Option<Payload> {
         self.same_bytes().then_some(self.payload)
     }
 
@@ -196,7 +225,7 @@ impl Watch {
     }
 
     /// The payload sampled after [`Watch::take_bytes`] returned `true`.
-    pub(crate) fn take(&mut self, payload: Payload) {
+    pub(super) fn take(&mut self, payload: Payload) {
         if self.state == State::Ready {
             self.payload = payload;
             self.state = State::Taken;

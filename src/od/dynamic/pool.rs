@@ -37,8 +37,9 @@ pub(crate) struct Layout {
     pub(crate) entries: usize,
     pub(crate) subs_at: usize,
     pub(crate) subs: usize,
-    pub(crate) chan_at: usize,
+    pub(crate) rx_at: usize,
     pub(crate) rx_channels: usize,
+    pub(crate) tx_at: usize,
     pub(crate) tx_channels: usize,
     pub(crate) data_at: usize,
     pub(crate) snap_at: usize,
@@ -48,20 +49,23 @@ pub(crate) struct Layout {
 
 impl Layout {
     /// The regions for `plan` beside `user` entries of the user part, with
-    /// PDO channels of type `C`.
-    pub(crate) fn of<C>(plan: &Plan<'_>, user: usize) -> Option<Layout> {
+    /// RPDO channels of type `R` and TPDO channels of type `T` (these after
+    /// those).
+    pub(crate) fn of<R, T>(plan: &Plan<'_>, user: usize) -> Option<Layout> {
         let entries = user.checked_add(plan.new_indices)?;
         let subs_at = align_up(
             entries.checked_mul(size_of::<ObdEntry>())?,
             align_of::<ObdSubEntry>(),
         );
         let subs_end = subs_at.checked_add(plan.new_subs.checked_mul(size_of::<ObdSubEntry>())?)?;
-        let chan_at = align_up(subs_end, align_of::<C>());
-        let channels = plan.rx_channels.checked_add(plan.tx_channels)?;
-        let data_at = if channels == 0 {
+        let rx_at = align_up(subs_end, align_of::<R>());
+        let rx_end = rx_at.checked_add(plan.rx_channels.checked_mul(size_of::<R>())?)?;
+        let tx_at = align_up(rx_end, align_of::<T>());
+        let tx_end = tx_at.checked_add(plan.tx_channels.checked_mul(size_of::<T>())?)?;
+        let data_at = if plan.rx_channels == 0 && plan.tx_channels == 0 {
             subs_end
         } else {
-            chan_at.checked_add(channels.checked_mul(size_of::<C>())?)?
+            tx_end
         };
         let snap_at = data_at.checked_add(plan.data_bytes)?;
         let copy_at = snap_at.checked_add(plan.snapshot_bytes)?;
@@ -70,8 +74,9 @@ impl Layout {
             entries,
             subs_at,
             subs: plan.new_subs,
-            chan_at,
+            rx_at,
             rx_channels: plan.rx_channels,
+            tx_at,
             tx_channels: plan.tx_channels,
             data_at,
             snap_at,

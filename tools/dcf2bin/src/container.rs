@@ -11,6 +11,7 @@ use cop::od::dcf::{
 };
 use cop::od::dynamic::Plan;
 use cop::od::{ObdEntry, ObdSubEntry, ObjectDictionary};
+use cop::pdo::Direction;
 
 use crate::{Dcf, Error};
 
@@ -227,18 +228,36 @@ pub struct PoolNeed {
     pub scratch_bytes: usize,
     /// PDO channels the build takes from the pool on this build of the
     /// library (its `PDO_MAX_RXPDO_IN_OBD` / `PDO_MAX_TXPDO_IN_OBD` 0).
-    pub pooled_channels: usize,
+    pub pooled_channels: PerDirection,
     /// PDO channels the container needs from the pool on a node whose
-    /// obdcfg.h counts 0 RPDOs and 0 TPDOs: highest RPDO number + 1 plus
+    /// obdcfg.h counts 0 RPDOs and 0 TPDOs: highest RPDO number + 1 and
     /// highest TPDO number + 1 of its entries.
-    pub container_channels: usize,
-    /// Bytes of one PDO channel on this host (`cop::pdo::channel_size`);
-    /// on 32-bit targets it is smaller (narrower pointers), so figures
-    /// with it are upper bounds there.
-    pub channel_bytes: usize,
+    pub container_channels: PerDirection,
+    /// Bytes of one RPDO and of one TPDO channel on this host
+    /// (`cop::pdo::channel_size`; a TPDO's holds its change watch); on
+    /// 32-bit targets they are smaller (narrower pointers), so figures
+    /// with them are upper bounds there.
+    pub channel_bytes: PerDirection,
 }
 
-/// Alignment of the PDO channels in the pool (at most 8).
+/// A figure for each PDO direction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct PerDirection {
+    /// Receive PDOs.
+    pub rx: usize,
+    /// Transmit PDOs.
+    pub tx: usize,
+}
+
+impl PerDirection {
+    /// Both directions together.
+    pub fn total(&self) -> usize {
+        self.rx + self.tx
+    }
+}
+
+/// Alignment of the PDO channels in the pool (at most 8); the TPDO
+/// channels follow the RPDO ones, whose size is a multiple of it.
 const CHANNEL_ALIGN: usize = 8;
 
 impl PoolNeed {
@@ -246,13 +265,21 @@ impl PoolNeed {
         self.end_with(entry, sub, sub_align, self.pooled_channels)
     }
 
-    fn end_with(&self, entry: usize, sub: usize, sub_align: usize, channels: usize) -> usize {
+    fn end_with(
+        &self,
+        entry: usize,
+        sub: usize,
+        sub_align: usize,
+        channels: PerDirection,
+    ) -> usize {
         let tables = (self.user_entries + self.new_indices) * entry;
         let subs_end = tables.div_ceil(sub_align) * sub_align + self.new_subs * sub;
-        let chan_end = if channels == 0 {
+        let chan_end = if channels.total() == 0 {
             subs_end
         } else {
-            subs_end.div_ceil(CHANNEL_ALIGN) * CHANNEL_ALIGN + channels * self.channel_bytes
+            subs_end.div_ceil(CHANNEL_ALIGN) * CHANNEL_ALIGN
+                + channels.rx * self.channel_bytes.rx
+                + channels.tx * self.channel_bytes.tx
         };
         chan_end + self.data_bytes + self.snapshot_bytes + self.copy_bytes
     }
@@ -314,9 +341,15 @@ pub fn pool_need(
         copy_bytes: seg,
         scratch_bytes: index_scratch_len(c.len(), seg, c.has_addresses()).unwrap_or(usize::MAX)
             + c.len(),
-        pooled_channels: plan.rx_channels + plan.tx_channels,
-        container_channels: rx + tx,
-        channel_bytes: cop::pdo::channel_size(),
+        pooled_channels: PerDirection {
+            rx: plan.rx_channels,
+            tx: plan.tx_channels,
+        },
+        container_channels: PerDirection { rx, tx },
+        channel_bytes: PerDirection {
+            rx: cop::pdo::channel_size(Direction::Rx),
+            tx: cop::pdo::channel_size(Direction::Tx),
+        },
     })
 }
 

@@ -186,11 +186,13 @@ fn pool_line(dcf: &Dcf, bytes: &[u8]) -> String {
                 n.target32_linear(),
                 n.host()
             );
-            if n.container_channels > 0 {
+            if n.container_channels.total() > 0 {
                 s.push_str(&format!(
-                    "; on a node whose obdcfg.h counts 0 RPDOs and 0 TPDOs (the container's {} PDO channels from the pool, at most {} bytes each): at most {} bytes on 32-bit targets",
-                    n.container_channels,
-                    n.channel_bytes,
+                    "; on a node whose obdcfg.h counts 0 RPDOs and 0 TPDOs (the container's {} RPDO and {} TPDO channels from the pool, at most {} and {} bytes each): at most {} bytes on 32-bit targets",
+                    n.container_channels.rx,
+                    n.container_channels.tx,
+                    n.channel_bytes.rx,
+                    n.channel_bytes.tx,
                     n.target32_pdos_from_pool()
                 ));
             }
@@ -240,7 +242,7 @@ fn pool_line_of(bytes: &[u8]) -> String {
             "pool (OBD_DYNAMIC_POOL_SIZE) on a node without any of these objects and without process image: {} bytes on 32-bit targets; at most {} when its obdcfg.h counts 0 RPDOs and 0 TPDOs ({} PDO channels from the pool)",
             n.target32(),
             n.target32_pdos_from_pool(),
-            n.container_channels
+            n.container_channels.total()
         ),
         Err(e) => format!(
             "DynBuildOd refuses it on any node: {}",

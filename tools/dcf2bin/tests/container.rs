@@ -10,6 +10,7 @@ use std::process::Command;
 
 use cop::od::ByteOrder;
 use cop::od::dcf::{self, EntrySpec, PiParams, attr};
+use cop::pdo::Direction;
 use cop::sim::SimBus;
 use dcf2bin::container::verify;
 
@@ -207,12 +208,14 @@ fn pool_figure_counts_the_pdo_channels_of_the_container() {
     ];
     let c = container(&e, None, None);
     let n = dcf2bin::container::pool_need_alone(&c, 0).unwrap();
-    assert_eq!(n.container_channels, 3);
-    assert_eq!(n.channel_bytes, cop::pdo::channel_size());
+    assert_eq!((n.container_channels.rx, n.container_channels.tx), (1, 2));
+    assert_eq!(n.channel_bytes.rx, cop::pdo::channel_size(Direction::Rx));
+    assert_eq!(n.channel_bytes.tx, cop::pdo::channel_size(Direction::Tx));
     // This library's own build counts 8 PDOs: none from the pool.
-    assert_eq!(n.pooled_channels, 0);
+    assert_eq!(n.pooled_channels.total(), 0);
     let without = n.target32();
     let with = n.target32_pdos_from_pool();
-    assert!(with >= without + 3 * n.channel_bytes, "{with} {without}");
-    assert!(with < without + 3 * n.channel_bytes + 8, "{with} {without}");
+    let channels = n.channel_bytes.rx + 2 * n.channel_bytes.tx;
+    assert!(with >= without + channels, "{with} {without}");
+    assert!(with < without + channels + 8, "{with} {without}");
 }
