@@ -425,3 +425,54 @@ fn the_bitmap_finds_the_overlaps_the_pairs_find() {
         "{overlapping} of 400 overlap"
     );
 }
+
+/// The pool regions of `DynBuildOd`: the RPDO channels after the subindex
+/// entries, the TPDO channels after them, each region aligned for its own
+/// channel type and ending before the next one starts (the claims the
+/// pool's `unsafe` block rests on), for channel types of different size and
+/// alignment; without channels the data follow the subindex entries.
+#[test]
+fn pool_layout_keeps_the_channel_regions_apart_and_aligned() {
+    use super::pool::Layout;
+    use core::mem::{align_of, size_of};
+    #[allow(dead_code)]
+    struct Small(u8, u8, u8);
+    #[allow(dead_code)]
+    #[repr(align(8))]
+    struct Wide([u8; 20]);
+    let b = container(&[(0x2100, 0, 0x70, &[0, 1]), (0x2101, 1, 0x70, &[1])]);
+    for (rx, tx) in [(0, 0), (1, 0), (0, 2), (3, 2)] {
+        let mut p = plan(&b).unwrap();
+        p.rx_channels = rx;
+        p.tx_channels = tx;
+        for user in [0, 1, 5] {
+            let l = Layout::of::<Small, Wide>(&p, user).unwrap();
+            let subs_end = l.subs_at + l.subs * size_of::<crate::od::ObdSubEntry>();
+            if rx + tx == 0 {
+                assert_eq!(l.data_at, subs_end, "{rx} {tx} {user}");
+                continue;
+            }
+            assert!(l.rx_at >= subs_end, "{rx} {tx} {user}");
+            assert_eq!(l.rx_at % align_of::<Small>(), 0);
+            assert_eq!(l.tx_at % align_of::<Wide>(), 0, "{rx} {tx} {user}");
+            assert!(
+                l.rx_at + rx * size_of::<Small>() <= l.tx_at,
+                "{rx} {tx} {user}"
+            );
+            assert_eq!(
+                l.data_at,
+                l.tx_at + tx * size_of::<Wide>(),
+                "{rx} {tx} {user}"
+            );
+            assert_eq!((l.rx_channels, l.tx_channels), (rx, tx));
+        }
+    }
+    // Reversed alignments: the TPDO region is aligned up after small RPDO
+    // channels.
+    let mut p = plan(&b).unwrap();
+    p.rx_channels = 1;
+    p.tx_channels = 1;
+    let l = Layout::of::<Wide, Small>(&p, 1).unwrap();
+    assert_eq!(l.rx_at % align_of::<Wide>(), 0);
+    assert_eq!(l.tx_at, l.rx_at + size_of::<Wide>());
+}
