@@ -279,6 +279,10 @@ impl OdError {
     pub const TOO_HIGH: OdError = OdError::new(CopKernel::ObdValueToHigh, SdoAbort::ValueTooHigh);
     /// Value below the object's range.
     pub const TOO_LOW: OdError = OdError::new(CopKernel::ObdValueToLow, SdoAbort::ValueTooLow);
+    /// A value a module's rules refuse for its object (an identifier it
+    /// cannot use, a count other than the one allowed): kCopInvalidParam,
+    /// SDO abort 0x06090030.
+    pub const VALUE_RANGE: OdError = OdError::new(CopKernel::InvalidParam, SdoAbort::ValueRange);
     /// A USERDEF/DOMAIN object whose variable the application has not defined.
     pub const NO_VAR: OdError = OdError::new(
         CopKernel::ObdVarEntryNotExist,

@@ -5,7 +5,7 @@
 //! 301 7.5.2.4); both also reset the error register 0x1001. Any other value
 //! written to subindex 0 is refused with SDO abort 0x06090030.
 
-use crate::error::{CopKernel, CopResult, OdError, SdoAbort};
+use crate::error::{CopKernel, CopResult, OdError};
 use crate::od::{Object, ObjectDictionary, Staged};
 use crate::port::{CanId, CanPort, Priority, Ticks};
 use crate::wire::emcy::{self, Emergency};
@@ -32,9 +32,6 @@ pub fn usable_cob_id(cob: u32) -> bool {
     cob & COB_INVALID != 0
         || (cob & COB_NO_RTR == 0 && check_identifier(cob, crate::config::CDRV_CAN20B).is_ok())
 }
-
-/// A write to 0x1014 with a COB-ID the producer cannot use.
-pub const REFUSE_COB_ID: OdError = OdError::new(CopKernel::InvalidParam, SdoAbort::ValueRange);
 
 /// The emergency producer.
 #[derive(Clone, Debug, Default)]
@@ -167,7 +164,7 @@ impl EmcyProducer {
 }
 
 /// A write of anything but 0 to 0x1003 sub 0 (CiA 301 7.5.2.4).
-pub const REFUSE_ERROR_COUNT: OdError = OdError::new(CopKernel::InvalidParam, SdoAbort::ValueRange);
+pub const REFUSE_ERROR_COUNT: OdError = OdError::VALUE_RANGE;
 
 /// Module hook: only 0 may be written to 0x1003 sub 0 (the other
 /// subindices follow the dictionary's access rights), and only a
@@ -176,7 +173,7 @@ pub fn check_write(obj: &Object, value: &Staged) -> Result<(), OdError> {
     match (obj.index(), obj.sub()) {
         (ERROR_FIELD_INDEX, 0) if value.as_u64() != Some(0) => Err(REFUSE_ERROR_COUNT),
         (COB_ID_INDEX, 0) if !value.as_u64().is_some_and(|v| usable_cob_id(v as u32)) => {
-            Err(REFUSE_COB_ID)
+            Err(OdError::VALUE_RANGE)
         }
         _ => Ok(()),
     }

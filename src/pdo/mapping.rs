@@ -33,7 +33,7 @@ pub mod refuse {
     /// A value CiA 301 does not allow here (reserved transmission type,
     /// restricted or malformed COB-ID, COB-ID or inhibit time changed while
     /// the PDO is valid): 0x06090030.
-    pub const INVALID: OdError = OdError::new(CopKernel::InvalidParam, SdoAbort::ValueRange);
+    pub const INVALID: OdError = OdError::VALUE_RANGE;
     /// The mapping changes while the PDO is valid, or an entry changes
     /// while subindex 0 is not 0 (CiA 301 mapping procedure): 0x08000022.
     pub const STATE: OdError = OdError::new(CopKernel::PdoErrorMapp, SdoAbort::DeviceState);

@@ -5,7 +5,7 @@ pub mod server;
 pub use client::SdoClient;
 pub use server::SdoServer;
 
-use crate::error::{CopKernel, OdError, SdoAbort};
+use crate::error::OdError;
 use crate::od::{Object, Staged};
 use crate::wire::pdo::is_restricted;
 
@@ -34,17 +34,13 @@ pub fn usable_cob_id(v: u32) -> bool {
     }
 }
 
-/// A write of a COB-ID an SDO channel cannot use to sub 1 or 2 of an SDO
-/// parameter object.
-pub const REFUSE_COB_ID: OdError = OdError::new(CopKernel::InvalidParam, SdoAbort::ValueRange);
-
 /// Module hook: sub 1 and 2 of the SDO parameter objects take only a
 /// [`usable_cob_id`].
 pub fn check_write(obj: &Object, value: &Staged) -> Result<(), OdError> {
     let cob =
         (PARAMETER_FIRST..=PARAMETER_LAST).contains(&obj.index()) && matches!(obj.sub(), 1 | 2);
     if cob && !value.as_u64().is_some_and(|v| usable_cob_id(v as u32)) {
-        return Err(REFUSE_COB_ID);
+        return Err(OdError::VALUE_RANGE);
     }
     Ok(())
 }
