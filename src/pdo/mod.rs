@@ -456,6 +456,19 @@ pub const fn channel_size(dir: Direction) -> usize {
     }
 }
 
+/// `$body` for channel `$n` of direction `$dir` of `$pdo`, taken with
+/// `$get` (`get` / `get_mut`) and bound to `$ch`; `None` without that
+/// channel. RPDO and TPDO channels are of different types, so each
+/// direction is its own arm.
+macro_rules! on_channel {
+    ($pdo:expr, $dir:expr, $n:expr, $get:ident, |$ch:ident| $body:expr) => {
+        match $dir {
+            Direction::Rx => $pdo.rx.$get($n).map(|$ch| $body),
+            Direction::Tx => $pdo.tx.$get($n).map(|$ch| $body),
+        }
+    };
+}
+
 /// The channels of one direction: the `N` of the build configuration, or
 /// those a dynamic OD laid out in its pool for the PDOs its container
 /// creates beyond them (then these replace the fixed ones).
@@ -608,11 +621,7 @@ impl Pdo {
 
     /// The parameters of a PDO that has a channel.
     fn config(&self, p: PdoIndex) -> Option<&Config> {
-        let n = usize::from(p.number);
-        match p.dir {
-            Direction::Rx => self.rx.get(n).map(|c| &c.cfg),
-            Direction::Tx => self.tx.get(n).map(|c| &c.cfg),
-        }
+        on_channel!(self, p.dir, usize::from(p.number), get, |c| &c.cfg)
     }
 
     /// The communication index of a PDO this module serves; `None` for
@@ -636,10 +645,7 @@ impl Pdo {
     /// order 0x1400+n / 0x1800+n) when it is served and valid
     /// (`CcmCobGetParam`).
     pub fn cob_entry(&self, dir: Direction, n: usize) -> Option<(CanId, u8)> {
-        let (cfg, len) = match dir {
-            Direction::Rx => self.rx.get(n).map(|c| (&c.cfg, c.len())),
-            Direction::Tx => self.tx.get(n).map(|c| (&c.cfg, c.len())),
-        }?;
+        let (cfg, len) = on_channel!(self, dir, n, get, |c| (&c.cfg, c.len()))?;
         if !cfg.present {
             return None;
         }
@@ -752,16 +758,9 @@ impl Pdo {
         let operational = self.operational;
         let n = usize::from(p.number);
         let event_time = p.role == Role::Commu && obj.sub() == 5;
-        let cob_changed = match p.dir {
-            Direction::Rx => self
-                .rx
-                .get_mut(n)
-                .map(|ch| ch.after_store(load(od, p.dir, n), event_time, operational, now)),
-            Direction::Tx => self
-                .tx
-                .get_mut(n)
-                .map(|ch| ch.after_store(load(od, p.dir, n), event_time, operational, now)),
-        };
+        let cob_changed = on_channel!(self, p.dir, n, get_mut, |ch| {
+            ch.after_store(load(od, p.dir, n), event_time, operational, now)
+        });
         if cob_changed == Some(true) {
             self.resubscribe = true;
         }
@@ -790,11 +789,9 @@ impl Pdo {
     ) -> CopResult {
         self.wake();
         let p = self.covers(od, commu_index).ok_or(CopKernel::PdoNotExist)?;
-        let n = usize::from(p.number);
-        match p.dir {
-            Direction::Rx => self.rx.get_mut(n).map(|ch| ch.attach(notify, static_data)),
-            Direction::Tx => self.tx.get_mut(n).map(|ch| ch.attach(notify, static_data)),
-        }
+        on_channel!(self, p.dir, usize::from(p.number), get_mut, |ch| {
+            ch.attach(notify, static_data)
+        })
         .unwrap_or(Err(CopKernel::PdoNotExist))
     }
 
