@@ -13,7 +13,8 @@
  * CcmInitEmcc, CcmInitEmccEx, CcmEmccDefineProducerTab,
  * CcmClearPreDefinedErrorField, CcmInitLgs, CcmConfigLgs (and the
  * CcmConfigHbp conflict), CcmConfigSyncProducer, CcmTspSend, CcmInitStore,
- * CcmStoreCheckArchivState, CcmStoreRestoreDefault; frames per CiA 301
+ * CcmStoreCheckArchivState, CcmStoreRestoreDefault, the error behaviour
+ * 0x1029 on a bus-off; frames per CiA 301
  * (EMCY 7.2.7.3.1, SYNC 7.2.5, TIME 7.2.6, SDO 7.2.4.3).
  */
 #include "test_util.h"
@@ -39,6 +40,7 @@ static tCopKernel RetInitStore_g = 0xFFFF;
 static tCopKernel RetArchive_g = 0xFFFF;
 static tCopKernel RetConfigEmcp_g = 0xFFFF;
 static unsigned uResetComm_g;
+static unsigned uEnterPreOp_g;
 
 static tCopKernel PUBLIC AppCbNmtEvent (tNmtEvent NmtEvent_p)
 {
@@ -57,6 +59,10 @@ static tCopKernel PUBLIC AppCbNmtEvent (tNmtEvent NmtEvent_p)
             uResetComm_g++;
             RetConfigEmcp_g = CcmConfigEmcp(0x80 + ID_P);
             return RetConfigEmcp_g;
+
+        case kNmtEvEnterPreOperational:
+            uEnterPreOp_g++;
+            return kCopSuccessful;
 
         default:
             return kCopSuccessful;
@@ -394,6 +400,53 @@ static void Store (void)
     CHECK_EQ(ReadU32(0x1011, 1), 1);
 }
 
+/* 0x1029 (CiA 301 7.5.2.32): the state after a communication error; here
+ * the driver's kCdrvBusOff. */
+static void ErrorBehaviour (void)
+{
+    SimSelectNode(SIM_P);
+    /* only 0 (pre-operational), 1 (no change) and 2 (stopped) are written */
+    SdoDownload(0x1029, 1, 0x03, 1, 0x06090030UL);
+    SdoDownload(0x1029, 1, 0x80, 1, 0x06090030UL);
+    CHECK_EQ(TestReadU8(0x1029, 1), 1);
+
+    /* 1: a bus-off changes nothing */
+    CHECK_RET(CcmNmtsExecCommand(kNmtCommStartRemoteNode), kCopSuccessful);
+    SimRaiseStatus(SIM_P, kCdrvBusOff);
+    uEnterPreOp_g = 0;
+    Run(5);
+    CHECK_EQ(CcmObdGetNodeState(), kNodeStateOperational);
+    CHECK_EQ(uEnterPreOp_g, 0);
+    /* the stack reads the flag and leaves it to the application */
+    CHECK_EQ(SimGetStatus(SIM_P) & kCdrvBusOff, kCdrvBusOff);
+    CHECK_RET(CdrvResetStatus(kCdrvBusOff), kCopSuccessful);
+    Run(1);
+
+    /* 0: the next bus-off leads OPERATIONAL to PRE-OPERATIONAL, once */
+    SdoDownload(0x1029, 1, 0x00, 1, 0);
+    SimRaiseStatus(SIM_P, kCdrvBusOff);
+    Run(1);
+    CHECK_EQ(CcmObdGetNodeState(), kNodeStatePreOperational);
+    CHECK_EQ(uEnterPreOp_g, 1);
+    CHECK_RET(CcmNmtsExecCommand(kNmtCommStartRemoteNode), kCopSuccessful);
+    Run(5);
+    CHECK_EQ(CcmObdGetNodeState(), kNodeStateOperational);
+
+    /* 2: cleared and raised again, the node stops */
+    SdoDownload(0x1029, 1, 0x02, 1, 0);
+    CHECK_RET(CdrvResetStatus(kCdrvBusOff), kCopSuccessful);
+    Run(1);
+    SimRaiseStatus(SIM_P, kCdrvBusOff);
+    Run(1);
+    CHECK_EQ(CcmObdGetNodeState(), kNodeStateStopped);
+
+    CHECK_RET(CdrvResetStatus(kCdrvBusOff), kCopSuccessful);
+    CHECK_RET(CcmNmtsExecCommand(kNmtCommEnterPreOperational), kCopSuccessful);
+    Run(1);
+    SdoDownload(0x1029, 1, 0x01, 1, 0);
+    TestDrainSent();
+}
+
 int main (void)
 {
     SimReset();
@@ -407,6 +460,7 @@ int main (void)
     SyncProducer();
     TimeStamp();
     Store();
+    ErrorBehaviour();
 
     SimSelectNode(SIM_M);
     CHECK_RET(CcmShutDownCANopen(), kCopSuccessful);

@@ -29,7 +29,7 @@ use crate::error::{CopKernel, CopResult, OdError};
 use crate::event::{Action, ActionQueue, Event, Internal, NmtEvent, NmtState};
 use crate::heartbeat::{self, HeartbeatConsumer, HeartbeatProducer};
 use crate::nmt::slave::{self, Transition};
-use crate::nmt::{LifeGuardSlave, NmtMaster, lifeguard};
+use crate::nmt::{LifeGuardSlave, NmtMaster, error_behaviour, lifeguard};
 use crate::od::{ByteOrder, Object, ObjectDictionary, Staged, WriteHooks};
 use crate::pdo::Pdo;
 use crate::port::{CanId, CanPort, Priority, RxFrame, Ticks};
@@ -91,6 +91,9 @@ pub struct Stack {
     sdo_subscribed: Option<CanId>,
     /// Identifiers changed outside a cycle; subscribe at the next one.
     resubscribe: bool,
+    /// The driver's bus-off flag at the last cycle (a communication error
+    /// counts when it is raised).
+    bus_off: bool,
     hb: HeartbeatProducer,
     hbc: HeartbeatConsumer,
     nmtm: NmtMaster,
@@ -161,6 +164,7 @@ impl WriteHooks for Hooks<'_> {
         }
         emcy::producer::check_write(obj, value)?;
         crate::sdo::check_write(obj, value)?;
+        error_behaviour::check_write(obj, value)?;
         self.store.check_write(od, obj, value, self.state)?;
         Ok(())
     }
@@ -218,6 +222,7 @@ impl Stack {
             guard_toggle: false,
             sdo_subscribed: None,
             resubscribe: false,
+            bus_off: false,
             hb: HeartbeatProducer::new(),
             hbc: HeartbeatConsumer::new(),
             nmtm: NmtMaster::new(),
@@ -453,14 +458,21 @@ impl Stack {
     }
 
     /// Phase `Overrun`: identifiers changed outside a cycle, the driver's
-    /// overrun flag.
+    /// overrun and bus-off flags.
     #[inline(always)]
     fn check_overrun(&mut self, port: &mut impl CanPort) {
         if core::mem::take(&mut self.resubscribe) {
             self.subscribe(port);
         }
-        if port.take_rx_overrun() && self.connected {
+        let status = port.status();
+        if status.rx_overrun && self.connected {
             self.srdo.on_rx_overrun();
+        }
+        if status.bus_off != self.bus_off {
+            self.bus_off = status.bus_off;
+            if status.bus_off && self.connected {
+                self.communication_error();
+            }
         }
         self.phase = Phase::OverrunReport;
     }
@@ -546,6 +558,9 @@ impl Stack {
                 Phase::HbcTimers => {
                     if !self.connected || self.hbc.poll(now, &mut self.queue) {
                         self.phase = Phase::NmtmTimers;
+                    } else {
+                        // A producer was reported lost.
+                        self.communication_error();
                     }
                 }
                 Phase::NmtmTimers => {

@@ -179,6 +179,15 @@ pub enum Priority {
     Low,
 }
 
+/// The error flags of [`CanPort::status`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct PortStatus {
+    /// At least one received frame was lost since the last call.
+    pub rx_overrun: bool,
+    /// The controller is bus-off.
+    pub bus_off: bool,
+}
+
 /// The CAN controller as the stack sees it.
 pub trait CanPort {
     /// Queues a frame for transmission. `Err` carries the driver's code
@@ -192,6 +201,17 @@ pub trait CanPort {
     /// was lost because the driver's buffer was full.
     fn take_rx_overrun(&mut self) -> bool {
         false
+    }
+
+    /// The controller's error flags, read once per cycle: the receive
+    /// overrun of [`CanPort::take_rx_overrun`] (cleared) and whether the
+    /// controller is bus-off (left as it is; the stack reacts when it is
+    /// raised, 0x1029). The default reports no bus-off.
+    fn status(&mut self) -> PortStatus {
+        PortStatus {
+            rx_overrun: self.take_rx_overrun(),
+            bus_off: false,
+        }
     }
 
     /// Asks the driver to receive `id` (acceptance filter). Drivers without

@@ -12,7 +12,7 @@ use std::collections::VecDeque;
 use std::rc::Rc;
 
 use crate::error::{CopKernel, CopResult};
-use crate::port::{CanFrame, CanPort, Clock, Priority, RxFrame, Ticks};
+use crate::port::{CanFrame, CanPort, Clock, PortStatus, Priority, RxFrame, Ticks};
 
 pub mod faults;
 pub mod nvram;
@@ -37,6 +37,7 @@ struct Node {
     capacity: usize,
     overrun: bool,
     tx_refuse: usize,
+    bus_off: bool,
 }
 
 struct Bus {
@@ -111,6 +112,7 @@ impl SimBus {
             capacity,
             overrun: false,
             tx_refuse: 0,
+            bus_off: false,
         });
         SimPort {
             bus: self.clone(),
@@ -149,6 +151,14 @@ impl SimBus {
     pub fn refuse_tx(&self, node: usize, n: usize) {
         if let Some(x) = self.0.borrow_mut().nodes.get_mut(node) {
             x.tx_refuse = n;
+        }
+    }
+
+    /// Sets or clears the bus-off flag node `node`'s driver reports
+    /// ([`CanPort::status`]); only the flag, its frames still go out.
+    pub fn set_bus_off(&self, node: usize, on: bool) {
+        if let Some(x) = self.0.borrow_mut().nodes.get_mut(node) {
+            x.bus_off = on;
         }
     }
 
@@ -264,6 +274,16 @@ impl CanPort for SimPort {
             .nodes
             .get_mut(self.node)
             .is_some_and(|n| std::mem::take(&mut n.overrun))
+    }
+
+    fn status(&mut self) -> PortStatus {
+        let mut b = self.bus.0.borrow_mut();
+        b.nodes
+            .get_mut(self.node)
+            .map_or(PortStatus::default(), |n| PortStatus {
+                rx_overrun: std::mem::take(&mut n.overrun),
+                bus_off: n.bus_off,
+            })
     }
 }
 

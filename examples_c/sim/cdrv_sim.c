@@ -390,6 +390,14 @@ void SimRefuseTx (BYTE bNode_p, unsigned uCount_p)
     }
 }
 
+void SimRaiseStatus (BYTE bNode_p, WORD wBits_p)
+{
+    if (bNode_p < SIM_MAX_NODES)
+    {
+        aSimNode_g[bNode_p].m_Status = (tCdrvStatus) (aSimNode_g[bNode_p].m_Status | wBits_p);
+    }
+}
+
 void SimDropNextId (DWORD dwId_p)
 {
     fSimDropArmed_g = 1;

@@ -114,6 +114,7 @@ int SimFormatCandump (CONST tSimFrame* pFrame_p, char* pszLine_p, unsigned uSize
 /* Fault hooks. */
 void SimRefuseTx (BYTE bNode_p, unsigned uCount_p);   /* next uCount_p CdrvWriteMsg of the node fail */
 void SimDropNextId (DWORD dwId_p);                     /* next frame with this identifier is lost */
+void SimRaiseStatus (BYTE bNode_p, WORD wBits_p);      /* sets tCdrvStatus bits (kCdrvBusOff, ...); CdrvResetStatus clears */
 
 /* Inspection (tests). */
 int      SimIsIdDefined (BYTE bNode_p, DWORD dwId_p); /* 0 undefined, 1 low, 2 high priority */

@@ -10,6 +10,7 @@ use crate::emcy::EmcyConsumer;
 use crate::emcy::producer::{self as emcp, ERROR_FIELD_INDEX, ERROR_REGISTER_INDEX};
 use crate::error::{CopKernel, CopResult};
 use crate::event::NmtState;
+use crate::nmt::error_behaviour;
 use crate::nmt::lifeguard::{self as lgs, LifeGuardSlave};
 use crate::od::ByteOrder;
 use crate::port::{CanId, CanPort, Priority, Ticks};
@@ -171,6 +172,18 @@ impl Stack {
             // A full inhibit-time queue or a disabled producer loses the
             // frame; the error is recorded in 0x1001 / 0x1003 either way.
             let _ = self.emcy.send(&self.od, port, now, e);
+        }
+        self.communication_error();
+    }
+
+    /// A communication error of this node (heartbeat producer lost, life
+    /// guarding event, bus-off): queues the NMT state change 0x1029 sub 1
+    /// asks for ([`crate::nmt::error_behaviour`]), after the events already
+    /// queued.
+    pub(super) fn communication_error(&mut self) {
+        if let Some(target) = error_behaviour::reaction(&self.od).and_then(|r| r.target(self.state))
+        {
+            self.queue_state(target);
         }
     }
 

@@ -3,7 +3,7 @@
 
 use super::types::{cdrv_status, msg_type, tCanId, tCdrvInitParam, tCdrvMsg, tCopKernel, tTime};
 use crate::error::{CopKernel, CopResult};
-use crate::port::{CanFrame, CanId, CanPort, Clock, Priority, RxFrame, Ticks};
+use crate::port::{CanFrame, CanId, CanPort, Clock, PortStatus, Priority, RxFrame, Ticks};
 
 unsafe extern "C" {
     fn CdrvInit(pInitParam_p: *mut tCdrvInitParam) -> tCopKernel;
@@ -137,10 +137,17 @@ impl CanPort for CdrvPort {
     }
 
     fn take_rx_overrun(&mut self) -> bool {
+        self.status().rx_overrun
+    }
+
+    /// One `CdrvGetStatus` per cycle: the overrun bits are cleared with
+    /// `CdrvResetStatus` once taken; kCdrvBusOff is only read, so that the
+    /// application and the driver see it as before.
+    fn status(&mut self) -> PortStatus {
         let mut status: u16 = 0;
         // SAFETY: `status` is a valid WORD for the driver to fill.
         if unsafe { CdrvGetStatus(&mut status) } != 0 {
-            return false;
+            return PortStatus::default();
         }
         let lost = status
             & (cdrv_status::OVERRUN
@@ -150,7 +157,10 @@ impl CanPort for CdrvPort {
             // SAFETY: plain call; clears the bits we consumed.
             unsafe { CdrvResetStatus(lost) };
         }
-        lost != 0
+        PortStatus {
+            rx_overrun: lost != 0,
+            bus_off: status & cdrv_status::BUS_OFF != 0,
+        }
     }
 
     fn subscribe(&mut self, id: CanId, prio: Priority) -> CopResult {

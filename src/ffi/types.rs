@@ -102,6 +102,8 @@ pub mod msg_type {
 
 /// Driver status bits (`tCdrvStatus`) the stack evaluates.
 pub mod cdrv_status {
+    /// kCdrvBusOff.
+    pub const BUS_OFF: u16 = 0x0010;
     /// kCdrvOverrun.
     pub const OVERRUN: u16 = 0x0020;
     /// kCdrvRxBuffHighOverrun.

@@ -1,11 +1,13 @@
 //! Network management: the NMT slave's commands (SYS TEC NMTS), the NMT
-//! master (NMTM) with node guarding of its slaves, and the life guarding
-//! slave (LGS), which watches the master's guard requests.
+//! master (NMTM) with node guarding of its slaves, the life guarding
+//! slave (LGS), which watches the master's guard requests, and the error
+//! behaviour (0x1029), the state a communication error leads to.
 //!
 //! The slave's state machine is driven by the stack ([`crate::ccm`]): it
 //! decodes NMT commands into the transitions of [`slave`] and runs them in
 //! order through its action queue.
 
+pub mod error_behaviour;
 pub mod lifeguard;
 pub mod master;
 pub mod slave;
