@@ -318,6 +318,56 @@ fn a_pdo_the_node_cannot_map_is_named() {
 }
 
 #[test]
+fn a_refusal_outside_the_pdos_is_not_laid_on_them() {
+    // The node has 0x1029 and TPDO 1; the file keeps TPDO 1 valid and sets
+    // 0x1029 sub 1 to 0x80, which the error behaviour rule refuses (CiA
+    // 301 7.5.2.32 defines 0x00..=0x02; abort 0x06090030). The refusal is
+    // the object's, not the PDO's.
+    let dir = temp_dir("plain-blame");
+    let tpdo = "[1800]\nObjectType=0x9\n[1800sub0]\nDataType=0x0005\nAccessType=ro\nDefaultValue=2\n\
+[1800sub1]\nDataType=0x0007\nAccessType=rw\nDefaultValue=$NODEID+0x180\n\
+[1800sub2]\nDataType=0x0005\nAccessType=rw\nDefaultValue=255\n\
+[1A00]\nObjectType=0x9\n[1A00sub0]\nDataType=0x0005\nAccessType=rw\nDefaultValue=1\n\
+[1A00sub1]\nDataType=0x0007\nAccessType=rw\nDefaultValue=0x20000010\n\
+[2000]\nDataType=0x0006\nAccessType=rw\nPDOMapping=1\nDefaultValue=7\n";
+    let behaviour = |v: &str| {
+        format!(
+            "[1029]\nObjectType=0x8\n[1029sub0]\nDataType=0x0005\nAccessType=ro\nDefaultValue=1\n\
+[1029sub1]\nDataType=0x0005\nAccessType=rw\nDefaultValue={v}\n"
+        )
+    };
+    let node = dir.join("node.eds");
+    std::fs::write(&node, format!("{SMALL_NODE}{}{tpdo}", behaviour("0"))).unwrap();
+    let f = dir.join("app.dcf");
+    let check = |v: &str| {
+        let body = format!("[DeviceInfo]\nVendorName=x\n{}{tpdo}", behaviour(v));
+        std::fs::write(&f, body).unwrap();
+        let o = dcf2bin(&[
+            "--node-id",
+            "2",
+            "--check",
+            node.to_str().unwrap(),
+            f.to_str().unwrap(),
+        ]);
+        (o.status.code(), text(&o.stdout))
+    };
+    let (code, out) = check("2");
+    assert_eq!(code, Some(0), "{out}");
+    let (code, out) = check("0x80");
+    assert_eq!(code, Some(1), "{out}");
+    assert!(
+        out.contains("DynBuildOd refuses the container: kCopInvalidParam (0x0009)"),
+        "{out}"
+    );
+    assert!(
+        out.contains("0x1029 is refused on its own: kCopInvalidParam"),
+        "{out}"
+    );
+    assert!(!out.contains("TPDO 1"), "{out}");
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
 fn a_node_of_another_configuration_gets_its_own_build() {
     // examples_c/dynod has 2 RPDOs, 2 TPDOs, no SDO client, no bit
     // mapping: the check builds a dcf2bin for that configuration once
