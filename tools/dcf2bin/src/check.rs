@@ -335,8 +335,9 @@ fn mapping_problems(dcf: &Dcf, node: &Node, mapp: u16, receive: bool) -> Vec<Str
 }
 
 /// Finds the part of the file a container-level refusal `code` comes
-/// from: a PDO whose entries alone are refused (with the other objects),
-/// else an object refused alone.
+/// from: when the objects outside the PDOs are refused without them, each
+/// such object refused alone; else each PDO whose entries are refused
+/// (with the other objects).
 fn blame(dcf: &Dcf, node: &Node, image_len: usize, code: CopKernel) -> Vec<String> {
     let plain: Vec<crate::Object> = dcf
         .objects
@@ -356,6 +357,24 @@ fn blame(dcf: &Dcf, node: &Node, image_len: usize, code: CopKernel) -> Vec<Strin
         format!("{}:{first}..{last}", dcf.file.display())
     };
     let mut out = Vec::new();
+    // The other objects first: when they are refused without any PDO,
+    // every PDO tried with them would be refused too.
+    if attempt(dcf, plain.clone(), node, image_len) == Err(code) {
+        let mut by_index: BTreeMap<u16, Vec<crate::Object>> = BTreeMap::new();
+        for o in plain {
+            by_index.entry(o.index).or_default().push(o);
+        }
+        for (index, objs) in by_index {
+            if attempt(dcf, objs.clone(), node, image_len) == Err(code) {
+                out.push(format!(
+                    "{} 0x{index:04X} is refused on its own: {}",
+                    lines(&objs),
+                    kernel_name(code)
+                ));
+            }
+        }
+        return out;
+    }
     for ((dir, n), objs) in &pdos {
         let mut with = plain.clone();
         with.extend(objs.iter().cloned());
@@ -379,24 +398,6 @@ fn blame(dcf: &Dcf, node: &Node, image_len: usize, code: CopKernel) -> Vec<Strin
                 cop::config::PDO_USE_BIT_MAPPING,
                 cop::config::PDO_MAX_MAPPENTRIES
             ));
-        }
-    }
-    if !out.is_empty() {
-        return out;
-    }
-    if attempt(dcf, plain.clone(), node, image_len) == Err(code) {
-        let mut by_index: BTreeMap<u16, Vec<crate::Object>> = BTreeMap::new();
-        for o in plain {
-            by_index.entry(o.index).or_default().push(o);
-        }
-        for (index, objs) in by_index {
-            if attempt(dcf, objs.clone(), node, image_len) == Err(code) {
-                out.push(format!(
-                    "{} 0x{index:04X} is refused on its own: {}",
-                    lines(&objs),
-                    kernel_name(code)
-                ));
-            }
         }
     }
     out
