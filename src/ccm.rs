@@ -468,9 +468,11 @@ impl Stack {
         if status.rx_overrun && self.connected {
             self.srdo.on_rx_overrun();
         }
-        if status.bus_off != self.bus_off {
+        // Followed once connected, so that a controller already bus-off
+        // when the node connects counts at its first cycle.
+        if self.connected && status.bus_off != self.bus_off {
             self.bus_off = status.bus_off;
-            if status.bus_off && self.connected {
+            if status.bus_off {
                 self.communication_error();
             }
         }

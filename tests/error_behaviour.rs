@@ -289,3 +289,25 @@ fn a_life_guarding_event_leads_to_the_state_0x1029_asks_for() {
         vec![Event::Nmt(NmtEvent::EnterStopped)]
     );
 }
+
+#[test]
+fn a_controller_bus_off_before_the_node_connects_counts_at_its_first_cycle() {
+    let _guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let bus = cop::sim::SimBus::new();
+    let mut port = bus.attach(64);
+    bus.set_bus_off(port.node(), true);
+    let mut stack = cop::ccm::Stack::new(node_a::od(), ID_A).unwrap();
+    while stack.drain(&mut port, bus.now()).is_some() {}
+    stack
+        .write_object(0x1029, 1, cop::od::ByteOrder::Wire, &[2], bus.now())
+        .unwrap();
+    // Cycles before the connection do not take the flag.
+    stack.process(&mut port, bus.now(), |_, _| {});
+    stack.connect().unwrap();
+    while stack.drain(&mut port, bus.now()).is_some() {}
+    assert_eq!(stack.nmt_state(), NmtState::PreOperational);
+    let mut events = Vec::new();
+    stack.process(&mut port, bus.now(), |_, e| events.push(e));
+    assert_eq!(stack.nmt_state(), NmtState::Stopped);
+    assert_eq!(events, vec![Event::Nmt(NmtEvent::EnterStopped)]);
+}

@@ -143,6 +143,7 @@ impl CanPort for CdrvPort {
     /// One `CdrvGetStatus` per cycle: the overrun bits are cleared with
     /// `CdrvResetStatus` once taken; kCdrvBusOff is only read, so that the
     /// application and the driver see it as before.
+    #[inline(always)]
     fn status(&mut self) -> PortStatus {
         let mut status: u16 = 0;
         // SAFETY: `status` is a valid WORD for the driver to fill.
