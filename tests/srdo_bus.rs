@@ -154,6 +154,34 @@ fn second_frame_exactly_at_srvt_is_valid() {
     assert_eq!(net.consumer_values(), [1, 2, 0xFFFE, 0xFFFD]);
 }
 
+// req: M-1.1-SRVT
+#[test]
+fn a_first_frame_held_for_the_whole_tick_range_completes_no_pair() {
+    // The producer falls silent after a first frame; the consumer runs on
+    // (one cycle every 2^28 ticks). 2^32 + 100 ticks later a lone inverted
+    // frame arrives: 100 ticks after the held frame when the 32-bit tick
+    // count is taken modulo 2^32, 4.97 days in fact. It must not complete
+    // a pair with the stale data.
+    let mut net = Net::operational();
+    net.inject(0x101, &[1, 0, 2, 0]);
+    assert!(no_pm(&net.c.cycle()).is_empty());
+    for _ in 0..16 {
+        net.wait_ticks(1 << 28);
+        net.c.cycle();
+    }
+    net.wait_ticks(100);
+    net.inject(0x102, &[0xFE, 0xFF, 0xFD, 0xFF]);
+    let ev = no_pm(&net.c.cycle());
+    let expected = if cop::config::SRDO_CHECK_SRVT_BEFORE_1STRX {
+        CopKernel::SrdoNotInOrder
+    } else {
+        CopKernel::SrdoSrvtTimeout
+    };
+    assert!(ev.contains(&Event::SrdoError(IDX, expected)), "{ev:?}");
+    assert!(!ev.contains(&Event::SrdoEvent(IDX)), "{ev:?}");
+    assert_eq!(net.consumer_values(), [0, 0, 0, 0]);
+}
+
 // req: SB-5-SRVT-SWITCH
 #[test]
 fn srvt_with_a_cycle_between_the_frames_follows_the_switch() {

@@ -43,6 +43,38 @@ fn first_send_waits_half_a_millisecond_per_node_id() {
     assert_eq!(net.bus.trace().len(), 2);
 }
 
+// req: M-2.5.1-FIRST-DELAY
+#[test]
+fn the_first_send_delay_does_not_return_after_half_the_tick_range() {
+    // The delay is once per entry into OPERATIONAL. A node that stays
+    // OPERATIONAL longer than 2^31 ticks (59.65 h at 100 us) still sends:
+    // with an early send, and without any send before (CcmProcess runs
+    // meanwhile, here once every 2^28 ticks).
+    for early_send in [true, false] {
+        let mut net = Net::preoperational();
+        net.p.command(NmtCommand::StartRemoteNode);
+        net.set_values(1, 2);
+        net.wait_ticks(5);
+        if early_send {
+            assert_eq!(net.p.send(IDX).0, Ok(()));
+        }
+        for _ in 0..9 {
+            net.wait_ticks(1 << 28);
+            net.p.cycle();
+        }
+        net.wait_ticks(10);
+        net.bus.clear_trace();
+        assert_eq!(net.p.send(IDX).0, Ok(()), "early send: {early_send}");
+        assert_eq!(net.bus.trace().len(), 2);
+        // After the next entry into OPERATIONAL the delay holds again.
+        net.p.command(NmtCommand::EnterPreOperational);
+        net.p.command(NmtCommand::StartRemoteNode);
+        assert_eq!(net.p.send(IDX).0, Err(CopKernel::SrdoNmtError));
+        net.wait_ticks(5);
+        assert_eq!(net.p.send(IDX).0, Ok(()));
+    }
+}
+
 // req: M-2.8.1-SEND, SB-2-RUN-ONLY-VALID
 #[test]
 fn refused_with_invalid_configuration() {
