@@ -188,6 +188,11 @@ pub struct MappParam {
     pub vars: [Option<&'static [AtomicU8]>; SRDO_MAX_MAPPENTRIES],
 }
 
+/// The age beyond which a held first frame counts as stale, far above
+/// the largest SRVT (65,535 ms = 655,350 ticks) and below the 2^31 ticks
+/// within which [`Ticks::since`] is exact: 2^30 ticks (1.24 days).
+const HELD_LIMIT: u32 = 1 << 30;
+
 /// Flags of [`Slot::flags`].
 mod flag {
     /// A first (normal) frame is held, waiting for its inverted frame.
@@ -280,6 +285,11 @@ pub struct Srdo {
     /// Transmit SRDOs: earliest first transmission after entering
     /// OPERATIONAL (the same for every SRDO of the node).
     tx_from: Ticks,
+    /// The first-send delay has passed. Set by the first send or timer
+    /// pass at or after `tx_from` (a pass comes at least every 2^30 ticks,
+    /// [`Srdo::plan_timers`]), so `tx_from` is never compared with an
+    /// instant 2^31 ticks or more after it.
+    tx_open: bool,
     /// No armed SCT deadline of a running receive SRDO lies before this
     /// instant, so the timer phase has nothing to do until it has passed
     /// (without the program monitor; see [`Srdo::poll`]).
@@ -358,6 +368,7 @@ impl Srdo {
             cursor: 0,
             not_operational_reported: false,
             tx_from: Ticks(0),
+            tx_open: false,
             due: Ticks(0),
             holding_seen: false,
         }
@@ -584,6 +595,7 @@ impl Srdo {
             }
         }
         self.tx_from = tx_from;
+        self.tx_open = false;
         self.running = true;
         self.plan_timers(now);
     }
@@ -930,6 +942,9 @@ impl Srdo {
             }
             return true;
         }
+        if !self.tx_open && now.reached(self.tx_from) {
+            self.tx_open = true;
+        }
         // Without the program monitor a pass only acts on a deadline that
         // has passed or (SRVT checked before the second frame) on a held
         // first frame; until then the whole pass is one comparison.
@@ -994,6 +1009,13 @@ impl Srdo {
                 }
             }
             return;
+        }
+        // A first frame held longer than any SRVT is dated back to
+        // HELD_LIMIT at each pass, so that its age, counted modulo 2^32,
+        // never looks recent again: a lone inverted frame days later is a
+        // SRVT timeout, not a pair with stale data.
+        if s.flags & flag::HOLDING != 0 && now.since(s.held_at) > HELD_LIMIT {
+            s.held_at = Ticks(now.0.wrapping_sub(HELD_LIMIT));
         }
         // Fast path of an idle cycle: no deadline passed, nothing to watch.
         let deadline_over = s.flags & flag::ARMED != 0 && now.is_after(s.deadline);
@@ -1072,8 +1094,11 @@ impl Srdo {
         if s.direction != Direction::Transmit as u8 {
             return Err(CopKernel::SrdoRxTxConflict);
         }
-        if !(now == self.tx_from || now.is_after(self.tx_from)) {
-            return Err(CopKernel::SrdoNmtError);
+        if !self.tx_open {
+            if !now.reached(self.tx_from) {
+                return Err(CopKernel::SrdoNmtError);
+            }
+            self.tx_open = true;
         }
         let Some((normal, inverted)) = self.gather(slot, s.dlc) else {
             self.report_error(slot, CopKernel::SrdoErrorMapp, q);
