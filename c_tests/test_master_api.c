@@ -346,6 +346,13 @@ static void SdoClient (void)
     Client.m_wClientIndex = 0x1280;
     Client.m_bServerNodeId = ID_S;
     CHECK_RET(CcmSdocDefineClientTab(NULL, 1), kCopInvalidParam);
+    /* 29-bit identifiers need a CAN 2.0B build (CDRV_CAN_SPEC; this one is
+     * CAN20A, so tCanId is a WORD): refused, not cut to 16 bits */
+    Client.m_bValidFlags = kSdocValidFlagRxCanId | kSdocValidFlagTxCanId;
+    Client.m_dwTxCanId = 0x21234603UL;
+    Client.m_dwRxCanId = 0x21234583UL;
+    CHECK_RET(CcmSdocDefineClientTab(&Client, 1), kCopSdocInvalidParam);
+    Client.m_bValidFlags = kSdocValidFlagServerNodeId;
     Client.m_wClientIndex = 0x1281;
     CHECK_RET(CcmSdocDefineClientTab(&Client, 1), kCopSdocClientNotExist);     /* SDO_MAX_CLIENT_IN_OBD 1 */
     Client.m_wClientIndex = 0x1280;

@@ -57,10 +57,15 @@ mod tests {
         ] {
             assert!(usable_cob_id(ok), "{ok:#x}");
         }
-        // Bit 30 is the channel's; bit 31 (no channel) and 29-bit
-        // identifiers are not 11-bit identifiers of another service.
-        for ok in [0x4000_0601, 0x8000_0101, 0x8000_0000, 0x2000_0101] {
+        // Bit 30 is the channel's; bit 31 (no channel) is not an
+        // identifier of another service.
+        for ok in [0x4000_0601, 0x8000_0101, 0x8000_0000] {
             assert!(usable_cob_id(ok), "{ok:#x}");
+        }
+        // 29-bit identifiers (bit 29) only where the driver's identifiers
+        // have 29 bits (CDRV_CAN_SPEC CAN20B; with CAN20A tCanId is a WORD).
+        for ext in [0x2000_0101, 0x2123_4603, 0x3FFF_FFFF] {
+            assert_eq!(usable_cob_id(ext), crate::config::CDRV_CAN20B, "{ext:#x}");
         }
         // NMT, GFC and SRDO, NMT error control, the other reserved ranges,
         // and identifiers beyond 11 bits.
