@@ -17,16 +17,21 @@ pub const PARAMETER_LAST: u16 = 0x12FF;
 
 /// True when an SDO channel may use the COB-ID `v` (sub 1 or 2 of its
 /// parameter object, CiA 301 §7.5.2.33 / §7.5.2.34): bit 31 set (the
-/// channel does not exist), a 29-bit identifier (bit 29), or an 11-bit
-/// identifier that CiA 301 §7.3.5 does not reserve for another service.
+/// channel does not exist), a 29-bit identifier (bit 29) where the driver
+/// has 29-bit identifiers (`CDRV_CAN_SPEC` CAN20B; with CAN20A `tCanId` is
+/// a WORD and the identifier would be cut), or an 11-bit identifier that
+/// CiA 301 §7.3.5 does not reserve for another service.
 /// The default SDO channels 0x581–0x5FF and 0x601–0x67F, reserved for SDO
 /// itself, are allowed; NMT, the GFC and SRDO identifiers (0x001,
 /// 0x101–0x180), NMT error control and the other reserved ranges are not,
 /// so that no SDO frame can be sent on a safety identifier. Bit 30
 /// (dynamic allocation) is left to the channel.
 pub fn usable_cob_id(v: u32) -> bool {
-    if v & 0x8000_0000 != 0 || v & 0x2000_0000 != 0 {
+    if v & 0x8000_0000 != 0 {
         return true;
+    }
+    if v & 0x2000_0000 != 0 {
+        return crate::config::CDRV_CAN20B;
     }
     match u16::try_from(v & !0x4000_0000) {
         Ok(id) if id <= 0x7FF => !is_restricted(id) || matches!(id, 0x581..=0x5FF | 0x601..=0x67F),
