@@ -1013,8 +1013,9 @@ impl Srdo {
         // A first frame held longer than any SRVT is dated back to
         // HELD_LIMIT at each pass, so that its age, counted modulo 2^32,
         // never looks recent again: a lone inverted frame days later is a
-        // SRVT timeout, not a pair with stale data.
-        if s.flags & flag::HOLDING != 0 && now.since(s.held_at) > HELD_LIMIT {
+        // SRVT timeout, not a pair with stale data. (`held_at` means
+        // nothing while no frame is held, so it is kept in range always.)
+        if now.since(s.held_at) > HELD_LIMIT {
             s.held_at = Ticks(now.0.wrapping_sub(HELD_LIMIT));
         }
         // Fast path of an idle cycle: no deadline passed, nothing to watch.
