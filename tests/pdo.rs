@@ -418,6 +418,21 @@ fn remote_requests() {
         .inject(CanFrame::remote(CanId::std_masked(0x181), 1));
     net.run(2);
     assert_eq!(net.frames(0x181).len(), 2);
+    // Bit 30 alone may change while the PDO exists (CiA 301 7.5.2.37 fixes
+    // bits 0-29 only): cleared, requests are answered again; set, not.
+    net.a.write(0x1800, 1, 0x181, 4).unwrap();
+    net.bus
+        .inject(CanFrame::remote(CanId::std_masked(0x181), 1));
+    net.run(2);
+    assert_eq!(net.frames(0x181).len(), 3);
+    net.a.write(0x1800, 1, 0x4000_0181, 4).unwrap();
+    net.bus
+        .inject(CanFrame::remote(CanId::std_masked(0x181), 1));
+    net.run(2);
+    assert_eq!(net.frames(0x181).len(), 3);
+    // The identifier itself stays fixed while the PDO exists.
+    assert!(net.a.write(0x1800, 1, 0x4000_0182, 4).is_err());
+    assert!(net.a.write(0x1800, 1, 0x182, 4).is_err());
 }
 
 #[test]

@@ -248,9 +248,12 @@ fn cia301_mapping_procedure() {
 #[test]
 fn communication_parameter_rules() {
     let (_g, od) = tpdo_1_valid();
-    // CiA 301 §7.5.2.37: the identifier does not change while valid.
+    // CiA 301 §7.5.2.37: bits 0-29 do not change while valid; bit 30
+    // (remote requests) may.
     assert_eq!(write(&od, 0x1800, 1, 0x182), Err(refuse::INVALID));
     assert_eq!(refuse::INVALID.abort, 0x0609_0030);
+    assert_eq!(write(&od, 0x1800, 1, 0x4000_0182), Err(refuse::INVALID));
+    write(&od, 0x1800, 1, 0x4000_0181).unwrap();
     write(&od, 0x1800, 1, 0x181).unwrap();
     // Inhibit time only while invalid.
     assert_eq!(write(&od, 0x1800, 3, 10), Err(refuse::INVALID));
