@@ -201,9 +201,10 @@ fn check_commu(od: &ObjectDictionary, p: PdoIndex, sub: u8, v: u32) -> Result<()
     match sub {
         1 => {
             let new_valid = v & COB_INVALID == 0;
-            // CiA 301 §7.5.2.35/37: the identifier (bits 0-30) must not
-            // change while the PDO exists; switching bit 31 is the way.
-            if cur_valid && new_valid && v != cur {
+            // CiA 301 §7.5.2.35/37: bits 0-29 (frame format and
+            // identifier) must not change while the PDO exists; switching
+            // bit 31 is the way. Bit 30 (remote requests) may.
+            if cur_valid && new_valid && (v ^ cur) & !COB_NO_RTR != 0 {
                 return Err(refuse::INVALID);
             }
             if new_valid {

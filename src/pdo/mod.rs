@@ -341,7 +341,8 @@ impl<W: Watching> Channel<W> {
 
     /// Takes over the parameters after a write to its objects: `cfg` as
     /// read again, `event_time` when the write was to the event time
-    /// (communication sub 5). True when the COB-ID changed.
+    /// (communication sub 5). True when the identifiers to receive may have
+    /// changed (the COB-ID, or whether remote requests are answered).
     fn after_store(
         &mut self,
         cfg: Config,
@@ -351,6 +352,7 @@ impl<W: Watching> Channel<W> {
     ) -> bool {
         let was = self.cfg.cob;
         let was_type = self.cfg.tx_type;
+        let was_rtr = self.cfg.rtr_allowed;
         self.set_cfg(cfg);
         let cob_changed = self.cfg.cob != was;
         if self.cfg.cob.is_none() {
@@ -362,7 +364,7 @@ impl<W: Watching> Channel<W> {
             self.event_deadline = (tx_type::is_event(self.cfg.tx_type) && self.cfg.event_ms > 0)
                 .then(|| now.plus_ms(u32::from(self.cfg.event_ms)));
         }
-        cob_changed
+        cob_changed || self.cfg.rtr_allowed != was_rtr
     }
 
     /// [`Pdo::attach`] for this channel.
@@ -758,10 +760,10 @@ impl Pdo {
         let operational = self.operational;
         let n = usize::from(p.number);
         let event_time = p.role == Role::Commu && obj.sub() == 5;
-        let cob_changed = on_channel!(self, p.dir, n, get_mut, |ch| {
+        let ids_changed = on_channel!(self, p.dir, n, get_mut, |ch| {
             ch.after_store(load(od, p.dir, n), event_time, operational, now)
         });
-        if cob_changed == Some(true) {
+        if ids_changed == Some(true) {
             self.resubscribe = true;
         }
     }
