@@ -1014,8 +1014,9 @@ impl Srdo {
         // HELD_LIMIT at each pass, so that its age, counted modulo 2^32,
         // never looks recent again: a lone inverted frame days later is a
         // SRVT timeout, not a pair with stale data. (`held_at` means
-        // nothing while no frame is held, so it is kept in range always.)
-        if now.since(s.held_at) > HELD_LIMIT {
+        // nothing while no frame is held; the HOLDING test only keeps the
+        // idle pass short.)
+        if s.flags & flag::HOLDING != 0 && now.since(s.held_at) > HELD_LIMIT {
             s.held_at = Ticks(now.0.wrapping_sub(HELD_LIMIT));
         }
         // Fast path of an idle cycle: no deadline passed, nothing to watch.
