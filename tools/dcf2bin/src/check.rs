@@ -507,6 +507,31 @@ pub fn check_and_export(
             "  created 0x{index:04X} ({n} {subs} from the file)"
         ));
     }
+    // A created object takes the file's value as its default without the
+    // stack's write rules (0x1029 sub 1 = 0x80, for example); say where a
+    // write of the same value would be refused.
+    for (o, ex) in dcf.objects.iter().zip(&existed) {
+        let writable = stack
+            .od()
+            .find(o.index, o.sub)
+            .is_ok_and(|obj| obj.access().writable());
+        if *ex || !writable {
+            continue;
+        }
+        let now = bus.now();
+        if let Err(e) = stack.write_object(o.index, o.sub, ByteOrder::Wire, &o.data, now) {
+            r.lines.push(format!(
+                "  note: {}:{}: [{}] 0x{:04X} sub {} is created with {}, which the stack refuses on a write ({}): the node runs with it as a default (README, Behaviour decisions)",
+                dcf.file.display(),
+                o.value_line,
+                o.section,
+                o.index,
+                o.sub,
+                shown(o.typ(), &o.data),
+                kernel_name(e.kernel)
+            ));
+        }
+    }
     for ((o, was), ex) in dcf.objects.iter().zip(&before).zip(&existed) {
         if !ex {
             continue;

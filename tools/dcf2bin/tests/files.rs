@@ -364,6 +364,21 @@ fn a_refusal_outside_the_pdos_is_not_laid_on_them() {
         "{out}"
     );
     assert!(!out.contains("TPDO 1"), "{out}");
+    // On a node without 0x1029 the file creates it: the build takes 0x80
+    // as the default, and the check says that a write of it is refused.
+    std::fs::write(&node, format!("{SMALL_NODE}{tpdo}")).unwrap();
+    let (code, out) = check("0x80");
+    assert_eq!(code, Some(0), "{out}");
+    assert!(
+        out.contains("created 0x1029 (2 subindices from the file)"),
+        "{out}"
+    );
+    assert!(
+        out.contains("[1029sub1] 0x1029 sub 1 is created with 0x80, which the stack refuses on a write (kCopInvalidParam (0x0009))"),
+        "{out}"
+    );
+    let (_, out) = check("1");
+    assert!(!out.contains("note: "), "{out}");
     let _ = std::fs::remove_dir_all(dir);
 }
 
