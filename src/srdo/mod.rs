@@ -285,10 +285,10 @@ pub struct Srdo {
     /// Transmit SRDOs: earliest first transmission after entering
     /// OPERATIONAL (the same for every SRDO of the node).
     tx_from: Ticks,
-    /// The first-send delay has passed. Set by the first send or timer
-    /// pass at or after `tx_from` (a pass comes at least every 2^30 ticks,
-    /// [`Srdo::plan_timers`]), so `tx_from` is never compared with an
-    /// instant 2^31 ticks or more after it.
+    /// The first-send delay has passed. Set by the first send, or timer
+    /// step of a transmit SRDO, at or after `tx_from` (a pass comes at
+    /// least every 2^30 ticks, [`Srdo::plan_timers`]), so `tx_from` is
+    /// never compared with an instant 2^31 ticks or more after it.
     tx_open: bool,
     /// No armed SCT deadline of a running receive SRDO lies before this
     /// instant, so the timer phase has nothing to do until it has passed
@@ -942,9 +942,6 @@ impl Srdo {
             }
             return true;
         }
-        if !self.tx_open && now.reached(self.tx_from) {
-            self.tx_open = true;
-        }
         // Without the program monitor a pass only acts on a deadline that
         // has passed or (SRVT checked before the second frame) on a held
         // first frame; until then the whole pass is one comparison.
@@ -1007,6 +1004,12 @@ impl Srdo {
                     s.flags &= !flag::ARMED;
                     Self::progmon(q, ProgMonEvent::SrdoError);
                 }
+            }
+            // Every pass steps the transmit SRDOs, and a pass comes at
+            // least every 2^30 ticks: the first-send delay is settled long
+            // before `tx_from` could be compared beyond 2^31 ticks.
+            if !self.tx_open && now.reached(self.tx_from) {
+                self.tx_open = true;
             }
             return;
         }
