@@ -36,6 +36,8 @@ fn first_send_waits_half_a_millisecond_per_node_id() {
     net.bus.clear_trace();
     net.set_values(1, 2);
     net.wait_ticks(4);
+    // A `CcmProcess` within the delay does not end it.
+    net.p.cycle();
     assert_eq!(net.p.send(IDX).0, Err(CopKernel::SrdoNmtError));
     assert!(net.bus.trace().is_empty());
     net.wait_ticks(1);
