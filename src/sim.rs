@@ -268,12 +268,7 @@ impl CanPort for SimPort {
     }
 
     fn take_rx_overrun(&mut self) -> bool {
-        self.bus
-            .0
-            .borrow_mut()
-            .nodes
-            .get_mut(self.node)
-            .is_some_and(|n| std::mem::take(&mut n.overrun))
+        self.status().rx_overrun
     }
 
     fn status(&mut self) -> PortStatus {

@@ -7,7 +7,7 @@ pub use server::SdoServer;
 
 use crate::error::OdError;
 use crate::od::{Object, Staged};
-use crate::wire::pdo::is_restricted;
+use crate::wire::pdo::{COB_EXTENDED, COB_INVALID, COB_NO_RTR, is_restricted};
 
 /// First SDO parameter object (server 0x1200..=0x127F, client
 /// 0x1280..=0x12FF).
@@ -27,13 +27,13 @@ pub const PARAMETER_LAST: u16 = 0x12FF;
 /// so that no SDO frame can be sent on a safety identifier. Bit 30
 /// (dynamic allocation) is left to the channel.
 pub fn usable_cob_id(v: u32) -> bool {
-    if v & 0x8000_0000 != 0 {
+    if v & COB_INVALID != 0 {
         return true;
     }
-    if v & 0x2000_0000 != 0 {
+    if v & COB_EXTENDED != 0 {
         return crate::config::CDRV_CAN20B;
     }
-    match u16::try_from(v & !0x4000_0000) {
+    match u16::try_from(v & !COB_NO_RTR) {
         Ok(id) if id <= 0x7FF => !is_restricted(id) || matches!(id, 0x581..=0x5FF | 0x601..=0x67F),
         _ => false,
     }

@@ -1008,9 +1008,7 @@ impl Srdo {
             // Every pass steps the transmit SRDOs, and a pass comes at
             // least every 2^30 ticks: the first-send delay is settled long
             // before `tx_from` could be compared beyond 2^31 ticks.
-            if !self.tx_open && now.reached(self.tx_from) {
-                self.tx_open = true;
-            }
+            self.first_send_delay_over(now);
             return;
         }
         // A first frame held longer than any SRVT is dated back to
@@ -1053,6 +1051,15 @@ impl Srdo {
     }
 
     // ----------------------------------------------------------- transmission
+
+    /// True once the first-send delay after entering OPERATIONAL has
+    /// passed at `now`; settles [`Srdo::tx_open`] the first time.
+    fn first_send_delay_over(&mut self, now: Ticks) -> bool {
+        if !self.tx_open && now.reached(self.tx_from) {
+            self.tx_open = true;
+        }
+        self.tx_open
+    }
 
     /// `CcmSendSrdo` for one SRDO. Checks, in this order: `kCopSrdoNotExist`
     /// (no such SRDO), `kCopSrdoNmtError` (not OPERATIONAL),
@@ -1099,11 +1106,8 @@ impl Srdo {
         if s.direction != Direction::Transmit as u8 {
             return Err(CopKernel::SrdoRxTxConflict);
         }
-        if !self.tx_open {
-            if !now.reached(self.tx_from) {
-                return Err(CopKernel::SrdoNmtError);
-            }
-            self.tx_open = true;
+        if !self.first_send_delay_over(now) {
+            return Err(CopKernel::SrdoNmtError);
         }
         let Some((normal, inverted)) = self.gather(slot, s.dlc) else {
             self.report_error(slot, CopKernel::SrdoErrorMapp, q);
