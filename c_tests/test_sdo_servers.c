@@ -33,6 +33,13 @@ static void Request (DWORD dwId_p, const BYTE* pbData_p)
     TestProcess(1);
 }
 
+/* A request on dwRx_p and the response expected on dwTx_p. */
+static void Exchange (const char* pszWhat_p, DWORD dwRx_p, const BYTE* pbReq_p, DWORD dwTx_p, const BYTE* pbResp_p)
+{
+    Request(dwRx_p, pbReq_p);
+    TestExpectFrame(pszWhat_p, dwTx_p, 8, pbResp_p);
+}
+
 int main (void)
 {
     static CONST BYTE abBootUp[1] = { 0x00 };
@@ -71,10 +78,8 @@ int main (void)
     CHECK_EQ(SimSentPending(), 0);
 
     /* the default server configures the second one */
-    Request(DEFAULT_RX, abSetRx);
-    TestExpectFrame("0x1201/1 written", DEFAULT_TX, 8, abSetRxOk);
-    Request(DEFAULT_RX, abSetTx);
-    TestExpectFrame("0x1201/2 written", DEFAULT_TX, 8, abSetTxOk);
+    Exchange("0x1201/1 written", DEFAULT_RX, abSetRx, DEFAULT_TX, abSetRxOk);
+    Exchange("0x1201/2 written", DEFAULT_RX, abSetTx, DEFAULT_TX, abSetTxOk);
     CHECK_RET(CcmReadObject(0x1201, 2, &dwCobId, &Size), kCopSuccessful);
     CHECK_EQ(dwCobId, SECOND_TX);
 
@@ -88,27 +93,20 @@ int main (void)
     TestExpectFrame("second server: expedited upload", SECOND_TX, 8, abProduct);
 
     /* a segmented upload on the second server, the default server in between */
-    Request(SECOND_RX, abReadName);
-    TestExpectFrame("second server: initiate segmented upload", SECOND_TX, 8, abNameInit);
-    Request(DEFAULT_RX, abReadVendor);
-    TestExpectFrame("default server meanwhile", DEFAULT_TX, 8, abVendor);
-    Request(SECOND_RX, abSeg0);
-    TestExpectFrame("second server: segment 0", SECOND_TX, 8, abSeg0Resp);
-    Request(SECOND_RX, abSeg1);
-    TestExpectFrame("second server: last segment", SECOND_TX, 8, abSeg1Resp);
+    Exchange("second server: initiate segmented upload", SECOND_RX, abReadName, SECOND_TX, abNameInit);
+    Exchange("default server meanwhile", DEFAULT_RX, abReadVendor, DEFAULT_TX, abVendor);
+    Exchange("second server: segment 0", SECOND_RX, abSeg0, SECOND_TX, abSeg0Resp);
+    Exchange("second server: last segment", SECOND_RX, abSeg1, SECOND_TX, abSeg1Resp);
     CHECK_EQ(SimSentPending(), 0);
 
     /* bit 31: the server does not exist any more */
-    Request(DEFAULT_RX, abOff);
-    TestExpectFrame("0x1201/1 = 0x80000641", DEFAULT_TX, 8, abSetRxOk);
+    Exchange("0x1201/1 = 0x80000641", DEFAULT_RX, abOff, DEFAULT_TX, abSetRxOk);
     Request(SECOND_RX, abReadProduct);
     CHECK_EQ(SimSentPending(), 0);
 
     /* on again, then reset communication restores the dictionary's defaults */
-    Request(DEFAULT_RX, abSetRx);
-    TestExpectFrame("0x1201/1 written again", DEFAULT_TX, 8, abSetRxOk);
-    Request(SECOND_RX, abReadProduct);
-    TestExpectFrame("second server on again", SECOND_TX, 8, abProduct);
+    Exchange("0x1201/1 written again", DEFAULT_RX, abSetRx, DEFAULT_TX, abSetRxOk);
+    Exchange("second server on again", SECOND_RX, abReadProduct, SECOND_TX, abProduct);
     SimInject(0x000, 0, 2, abResetComm);
     TestProcess(2);
     TestExpectFrame("boot-up after reset communication", 0x700 + NODE_ID, 1, abBootUp);
@@ -118,8 +116,7 @@ int main (void)
     CHECK_EQ(dwCobId, 0x80000000UL);
     Request(SECOND_RX, abReadProduct);
     CHECK_EQ(SimSentPending(), 0);
-    Request(DEFAULT_RX, abReadVendor);
-    TestExpectFrame("default server after the reset", DEFAULT_TX, 8, abVendor);
+    Exchange("default server after the reset", DEFAULT_RX, abReadVendor, DEFAULT_TX, abVendor);
 
     CHECK_EQ(SimSentPending(), 0);
     CHECK_RET(CcmShutDownCANopen(), kCopSuccessful);

@@ -72,6 +72,10 @@ OBD_BEGIN ()
         // default SDO server (predefined connection set)
         OBD_CREATE_SDOS(0x1200, 0, 0x600, 0x580, 0x00)
 
+        // a second SDO server, delivered without COB-IDs (bit 31): a
+        // configuration tool gets its own channel once the master sets them
+        OBD_CREATE_SDOS(0x1201, 1, 0x80000000, 0x80000000, 0x00)
+
         // SDO client: configured at run time (CcmSdocDefineClientTab or SDO)
         OBD_CREATE_SDOC(0x1280, 0, 0x80000000, 0x80000000, 0x00)
 

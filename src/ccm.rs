@@ -33,7 +33,7 @@ use crate::nmt::{LifeGuardSlave, NmtMaster, error_behaviour, lifeguard};
 use crate::od::{ByteOrder, Object, ObjectDictionary, Staged, WriteHooks};
 use crate::pdo::Pdo;
 use crate::port::{CanId, CanPort, Priority, RxFrame, Ticks};
-use crate::sdo::{SdoClient, SdoServer};
+use crate::sdo::{SdoClient, SdoServers};
 use crate::srdo::{Received, Srdo};
 use crate::store::{self, StoreRestore};
 use crate::sync::{self, SyncProducer};
@@ -88,7 +88,8 @@ pub struct Stack {
     queue: ActionQueue,
     phase: Phase,
     guard_toggle: bool,
-    sdo_subscribed: Option<CanId>,
+    /// The request COB-ID the driver receives for each SDO server.
+    sdo_subscribed: [Option<CanId>; crate::config::SDO_MAX_SERVER_IN_OBD],
     /// Identifiers changed outside a cycle; subscribe at the next one.
     resubscribe: bool,
     /// The driver's bus-off flag at the last cycle (a communication error
@@ -98,7 +99,7 @@ pub struct Stack {
     hbc: HeartbeatConsumer,
     nmtm: NmtMaster,
     emcy: EmcyProducer,
-    sdo: SdoServer,
+    sdo: SdoServers,
     sdoc: SdoClient,
     srdo: Srdo,
     pdo: Pdo,
@@ -220,14 +221,14 @@ impl Stack {
             queue: ActionQueue::new(),
             phase: Phase::Idle,
             guard_toggle: false,
-            sdo_subscribed: None,
+            sdo_subscribed: [None; crate::config::SDO_MAX_SERVER_IN_OBD],
             resubscribe: false,
             bus_off: false,
             hb: HeartbeatProducer::new(),
             hbc: HeartbeatConsumer::new(),
             nmtm: NmtMaster::new(),
             emcy: EmcyProducer::new(),
-            sdo: SdoServer::new(),
+            sdo: SdoServers::new(),
             sdoc: SdoClient::new(),
             srdo: Srdo::new(),
             pdo: Pdo::new(),
@@ -641,8 +642,10 @@ impl Stack {
 
     #[inline(never)] // its frame stays out of poll_work (worst-case stack, docs/tms570.md)
     fn timers(&mut self, port: &mut impl CanPort, now: Ticks) {
-        if let Some(f) = self.sdo.poll(&self.od, now) {
-            let _ = port.send(&f, Priority::Low);
+        for s in self.sdo.channels_mut() {
+            if let Some(f) = s.poll(&self.od, now) {
+                let _ = port.send(&f, Priority::Low);
+            }
         }
         self.send_sdo_segments(port, now);
         if self.connected && self.state != NmtState::Initialisation {
@@ -732,9 +735,9 @@ impl Stack {
         if self.sdoc.on_frame(port, f, now, &mut self.queue) {
             return;
         }
-        if Some(f.id) == self.sdo.rx_id() {
+        if let Some(server) = self.sdo.receiving(f.id) {
             let mut hooks = hooks!(self, now);
-            let reply = self.sdo.on_frame(&self.od, &mut hooks, f, now);
+            let reply = server.on_frame(&self.od, &mut hooks, f, now);
             let changed = hooks.sdo_changed;
             if let Some(r) = reply {
                 let _ = port.send(&r, Priority::Low);
@@ -748,14 +751,17 @@ impl Stack {
         }
     }
 
-    /// Hands the segments of a block upload to the driver until it refuses
-    /// one (a full transmit buffer); the rest goes in the next cycle.
+    /// Hands the segments of the block uploads to the driver until it
+    /// refuses one (a full transmit buffer); the rest goes in the next
+    /// cycle.
     fn send_sdo_segments(&mut self, port: &mut impl CanPort, now: Ticks) {
-        while let Some(f) = self.sdo.pending_segment() {
-            if port.send(&f, Priority::Low).is_err() {
-                break;
+        for s in self.sdo.channels_mut() {
+            while let Some(f) = s.pending_segment() {
+                if port.send(&f, Priority::Low).is_err() {
+                    return;
+                }
+                s.segment_sent(now);
             }
-            self.sdo.segment_sent(now);
         }
     }
 
@@ -901,15 +907,17 @@ impl Stack {
         for id in self.sdoc.rx_ids() {
             let _ = port.subscribe(id, Priority::Low);
         }
-        let sdo = self.sdo.rx_id();
-        if sdo != self.sdo_subscribed {
-            if let Some(old) = self.sdo_subscribed {
-                let _ = port.unsubscribe(old);
+        for (s, subscribed) in self.sdo.channels().iter().zip(&mut self.sdo_subscribed) {
+            let sdo = s.rx_id();
+            if sdo != *subscribed {
+                if let Some(old) = *subscribed {
+                    let _ = port.unsubscribe(old);
+                }
+                if let Some(new) = sdo {
+                    let _ = port.subscribe(new, Priority::Low);
+                }
+                *subscribed = sdo;
             }
-            if let Some(new) = sdo {
-                let _ = port.subscribe(new, Priority::Low);
-            }
-            self.sdo_subscribed = sdo;
         }
     }
 

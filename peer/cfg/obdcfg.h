@@ -4,7 +4,8 @@
 #ifndef OBDCFG_H
 #define OBDCFG_H
 
-#define SDO_MAX_SERVER_IN_OBD          1
+/* the default SDO server and one more (0x1201) */
+#define SDO_MAX_SERVER_IN_OBD          2
 #define SDO_MAX_CLIENT_IN_OBD          1
 #define SRDO_MAX_SRDO_IN_OBD           1
 #define HBC_MAX_CONSUMER_IN_OBD        2

@@ -10,6 +10,7 @@ import ctypes
 import struct
 import unittest
 
+import can
 import canopen
 
 import copbus
@@ -336,3 +337,66 @@ class BlockTransfers(PeerTestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class SecondServer(PeerTestCase):
+    """The additional SDO server 0x1201 (CiA 301 7.5.2.33), delivered
+    without COB-IDs: python-canopen gives it its identifiers over the
+    default server and then uses it as a second SDO channel of its own
+    (RemoteNode.add_sdo), as a configuration tool beside the master would."""
+
+    RX, TX = 0x641, 0x5C1  # client to server, server to client
+
+    def channel(self):
+        second = self.node.add_sdo(self.RX, self.TX)
+        # add_sdo subscribes the channel but leaves its network unset
+        second.network = self.network
+        return second
+
+    def test_second_channel_after_configuration(self):
+        second = self.channel()
+        # delivered with bit 31 set: the server does not exist (that nothing
+        # answers then is checked frame by frame in c_tests/test_sdo_servers.c)
+        self.assertEqual(self.node.sdo[0x1201][1].raw, 0x80000000)
+        self.node.sdo[0x1201][1].raw = self.RX
+        self.node.sdo[0x1201][2].raw = self.TX
+        self.node.sdo[0x1201][3].raw = 0x7F
+        self.assertEqual(self.node.sdo[0x1201][1].raw, self.RX)
+
+        self.peer.trace.clear()
+        self.assertEqual(second.upload(0x1000, 0), struct.pack("<I", 0x00030191))
+        requests = [bytes(m.data) for who, m in self.peer.trace if who == "python" and m.arbitration_id == self.RX]
+        responses = [bytes(m.data) for who, m in self.peer.trace if who == "node" and m.arbitration_id == self.TX]
+        # CiA 301 7.2.4.3.6: initiate upload 0x40, expedited answer 0x43
+        self.assertEqual(requests, [bytes([0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0])])
+        self.assertEqual(responses, [bytes([0x43, 0x00, 0x10, 0x00, 0x91, 0x01, 0x03, 0x00])])
+
+        # segmented and block transfers on the second channel, the default
+        # channel still serving in between
+        second[0x2001].raw = "written over the second server"
+        self.assertEqual(self.node.sdo[0x2001].raw, "written over the second server")
+        text = bytes(0x30 + i % 40 for i in range(200))
+        with second.open(0x2001, 0, "wb", size=len(text), block_transfer=True) as f:
+            f.write(text)
+        self.assertEqual(self.peer.read(0x2001, 0), text)
+        with second.open(0x2001, 0, "rb", block_transfer=True) as f:
+            self.assertEqual(f.read(), text)
+        self.assertEqual(self.node.sdo[0x1000].raw, 0x00030191)
+
+        # bit 31 again: the channel is gone, the default one stays
+        self.peer.trace.clear()
+        self.node.sdo[0x1201][1].raw = 0x80000000 | self.RX
+        self.peer.inject(can.Message(arbitration_id=self.RX, data=bytes([0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0]), is_extended_id=False))
+        self.assertEqual(self.node.sdo[0x1000].raw, 0x00030191)
+        answers = [m for who, m in self.peer.trace if who == "node" and m.arbitration_id == self.TX]
+        self.assertEqual(answers, [])
+
+    def test_identifiers_of_other_services_are_refused(self):
+        """The same rule as for every SDO COB-ID: no SRDO or NMT identifier
+        (abort 0x06090030), and the object keeps its value."""
+        for cob in (0x109, 0x000, 0x701):
+            with self.subTest(cob=hex(cob)):
+                with self.assertRaises(canopen.SdoAbortedError) as cm:
+                    self.node.sdo[0x1201][1].raw = cob
+                self.assertEqual(cm.exception.code, 0x06090030)
+        self.assertEqual(self.node.sdo[0x1201][1].raw, 0x80000000)

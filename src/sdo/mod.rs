@@ -3,7 +3,7 @@ pub(crate) mod block;
 pub mod client;
 pub mod server;
 pub use client::SdoClient;
-pub use server::SdoServer;
+pub use server::{SdoServer, SdoServers};
 
 use crate::error::OdError;
 use crate::od::{Object, Staged};

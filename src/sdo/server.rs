@@ -1,5 +1,10 @@
-//! The default SDO server (CiA 301 SDO protocols, object 0x1200): expedited,
-//! segmented and block upload and download.
+//! The SDO servers (SYS TEC SDOS; CiA 301 SDO protocols, objects
+//! 0x1200..0x127F): expedited, segmented and block upload and download.
+//!
+//! [`SdoServer`] is one server channel; [`SdoServers`] holds the default
+//! server 0x1200 and the additional servers 0x1201.. up to
+//! [`SDO_MAX_SERVER_IN_OBD`]. Each channel has its own COB-IDs, transfer,
+//! timeout and buffer, so transfers on different servers run side by side.
 //!
 //! # Data consistency
 //! The server owns one transfer buffer of [`SDOS_BUFFER_SIZE`] bytes.
@@ -85,9 +90,18 @@
 //! disables the server (CiA 301 object 1200h: both COB-IDs must be valid); so
 //! does an 11-bit COB-ID with bits 28..11 set or an identifier of another
 //! service ([`super::usable_cob_id`]: never an SRDO or GFC identifier).
+//!
+//! An additional server 0x1201.. has no predefined connection (CiA 301
+//! 7.5.2.33): it answers only while its object exists with two valid
+//! COB-IDs, taken as they stand (0x600 / 0x580 there are identifiers, not
+//! bases). Its sub 3, the node-ID of the client, is information for the
+//! client and changes nothing here. Where two servers are given the same
+//! request COB-ID, the one with the lower index takes the frames.
 
 use super::block::{BlockRx, BlockTx, valid_blksize};
-use crate::config::{SDO_BLOCKSIZE_DOWNLOAD, SDOS_BUFFER_SIZE, SDOS_DEFAULT_TIMEOUT};
+use crate::config::{
+    SDO_BLOCKSIZE_DOWNLOAD, SDO_MAX_SERVER_IN_OBD, SDOS_BUFFER_SIZE, SDOS_DEFAULT_TIMEOUT,
+};
 use crate::error::{OdError, SdoAbort};
 use crate::od::{ByteOrder, ObjectDictionary, WriteHooks};
 use crate::port::{CanFrame, CanId, Ticks};
@@ -222,9 +236,12 @@ impl Transfer {
     }
 }
 
-/// The default SDO server (object 0x1200).
+/// One SDO server channel (object 0x1200, or 0x1201.. for an additional
+/// server).
 #[derive(Clone, Debug)]
 pub struct SdoServer {
+    /// Its server parameter object.
+    index: u16,
     rx: Option<CanId>,
     tx: Option<CanId>,
     timeout_ticks: u32,
@@ -235,10 +252,17 @@ pub struct SdoServer {
 crate::od::decl::default_is_new!(SdoServer);
 
 impl SdoServer {
-    /// An unconfigured server: it answers nothing until
+    /// The default server (0x1200), unconfigured: it answers nothing until
     /// [`SdoServer::reconfigure`] gives it its COB-IDs.
     pub const fn new() -> Self {
+        SdoServer::with_index(SERVER_PARAMETER_INDEX)
+    }
+
+    /// The server of parameter object `index` (0x1200..=0x127F),
+    /// unconfigured.
+    pub const fn with_index(index: u16) -> Self {
         SdoServer {
+            index,
             rx: None,
             tx: None,
             timeout_ticks: SDOS_DEFAULT_TIMEOUT,
@@ -247,13 +271,14 @@ impl SdoServer {
         }
     }
 
-    /// Takes the COB-IDs from object 0x1200 (see the module documentation
-    /// for the predefined connection set and the base-value rule). A
-    /// running transfer is dropped without answer when the COB-IDs change,
-    /// since its client can no longer be reached on them.
+    /// Takes the COB-IDs from its parameter object (see the module
+    /// documentation for the predefined connection set of 0x1200 and the
+    /// base-value rule). A running transfer is dropped without answer when
+    /// the COB-IDs change, since its client can no longer be reached on
+    /// them.
     pub fn reconfigure(&mut self, od: &ObjectDictionary, node: u8) {
-        let rx = cob_id(od, 1, REQUEST_BASE, node);
-        let tx = cob_id(od, 2, RESPONSE_BASE, node);
+        let rx = cob_id(od, self.index, 1, REQUEST_BASE, node);
+        let tx = cob_id(od, self.index, 2, RESPONSE_BASE, node);
         let (rx, tx) = match (rx, tx) {
             (Some(r), Some(t)) => (Some(r), Some(t)),
             _ => (None, None),
@@ -263,6 +288,11 @@ impl SdoServer {
         }
         self.rx = rx;
         self.tx = tx;
+    }
+
+    /// Its server parameter object (0x1200 for the default server).
+    pub fn index(&self) -> u16 {
+        self.index
     }
 
     /// COB-ID of requests (client to server); `None` while the server is
@@ -911,6 +941,65 @@ impl SdoServer {
     }
 }
 
+/// The node's SDO servers: the default server 0x1200 and the additional
+/// servers 0x1201.. up to [`SDO_MAX_SERVER_IN_OBD`], one channel each
+/// whether or not its object exists (a channel without its object answers
+/// nothing).
+#[derive(Clone, Debug)]
+pub struct SdoServers {
+    channels: [SdoServer; SDO_MAX_SERVER_IN_OBD],
+}
+
+crate::od::decl::default_is_new!(SdoServers);
+
+impl SdoServers {
+    /// Every channel unconfigured.
+    pub fn new() -> Self {
+        SdoServers {
+            channels: core::array::from_fn(|n| {
+                SdoServer::with_index(SERVER_PARAMETER_INDEX + n as u16)
+            }),
+        }
+    }
+
+    /// [`SdoServer::reconfigure`] of every channel.
+    pub fn reconfigure(&mut self, od: &ObjectDictionary, node: u8) {
+        for s in &mut self.channels {
+            s.reconfigure(od, node);
+        }
+    }
+
+    /// [`SdoServer::cancel`] of every channel.
+    pub fn cancel(&mut self) {
+        for s in &mut self.channels {
+            s.cancel();
+        }
+    }
+
+    /// True when no channel has a transfer running.
+    #[inline]
+    pub fn at_rest(&self) -> bool {
+        self.channels.iter().all(SdoServer::at_rest)
+    }
+
+    /// The channel whose request COB-ID is `id` (the lowest index where
+    /// several have it).
+    #[inline]
+    pub fn receiving(&mut self, id: CanId) -> Option<&mut SdoServer> {
+        self.channels.iter_mut().find(|s| s.rx_id() == Some(id))
+    }
+
+    /// The channels in the order of their objects, 0x1200 first.
+    pub fn channels(&self) -> &[SdoServer] {
+        &self.channels
+    }
+
+    /// As [`SdoServers::channels`], to poll or send.
+    pub fn channels_mut(&mut self) -> &mut [SdoServer] {
+        &mut self.channels
+    }
+}
+
 /// Bytes of an expedited download that does not state its size: the
 /// object's width when it has a fixed one of at most 4 bytes, else all 4.
 /// An unknown object gets 4; the write then reports why it does not exist.
@@ -922,10 +1011,15 @@ fn unsized_expedited_len(od: &ObjectDictionary, mux: Multiplexer) -> usize {
         .unwrap_or(EXPEDITED_MAX)
 }
 
-/// One COB-ID of 0x1200 (`sub` 1 or 2), or base + node-ID.
-fn cob_id(od: &ObjectDictionary, sub: u8, base: u16, node: u8) -> Option<CanId> {
-    let default = CanId::std(base.wrapping_add(u16::from(node)));
-    let Ok(raw) = od.read_uint(SERVER_PARAMETER_INDEX, sub) else {
+/// One COB-ID of server parameter object `index` (`sub` 1 or 2); for the
+/// default server 0x1200 also base + node-ID.
+fn cob_id(od: &ObjectDictionary, index: u16, sub: u8, base: u16, node: u8) -> Option<CanId> {
+    let default = if index == SERVER_PARAMETER_INDEX {
+        CanId::std(base.wrapping_add(u16::from(node)))
+    } else {
+        None
+    };
+    let Ok(raw) = od.read_uint(index, sub) else {
         return default;
     };
     let v = (raw & 0xFFFF_FFFF) as u32;
@@ -933,12 +1027,12 @@ fn cob_id(od: &ObjectDictionary, sub: u8, base: u16, node: u8) -> Option<CanId> 
         return None;
     }
     if v == u32::from(base) {
-        // The object holds the predefined base: it must show the COB-ID in
-        // use (CiA 301), so the node-ID goes into the object too.
         if let Some(id) = default {
-            let _ = od.poke_uint(SERVER_PARAMETER_INDEX, sub, u64::from(id.raw()));
+            // The object holds the predefined base: it must show the COB-ID
+            // in use (CiA 301), so the node-ID goes into the object too.
+            let _ = od.poke_uint(index, sub, u64::from(id.raw()));
+            return default;
         }
-        return default;
     }
     if v & COB_ID_EXTENDED != 0 {
         CanId::ext(v & 0x1FFF_FFFF)

@@ -701,9 +701,10 @@ fn cancel_drops_the_transfer_without_answer() {
     );
 }
 
-/// 0x1200 variants: one dictionary per COB-ID pair.
-macro_rules! od_1200 {
-    ($rx:expr, $tx:expr) => {{
+/// A server parameter object `index` with one COB-ID pair (0x1200 variants
+/// through `od_1200!`): one dictionary per pair.
+macro_rules! od_server {
+    ($index:expr, $rx:expr, $tx:expr) => {{
         static COUNT: [u8; 1] = [2];
         static RX: [AtomicU8; 4] = decl::init(($rx as u32).to_ne_bytes());
         static TX: [AtomicU8; 4] = decl::init(($tx as u32).to_ne_bytes());
@@ -712,9 +713,15 @@ macro_rules! od_1200 {
             ObdSubEntry::ram(1, DataType::UInt32, Access::RW, &RX, None),
             ObdSubEntry::ram(2, DataType::UInt32, Access::RW, &TX, None),
         ];
-        static GENERIC: [ObdEntry; 1] = [ObdEntry::new(0x1200, &S1200, None)];
+        static GENERIC: [ObdEntry; 1] = [ObdEntry::new($index, &S1200, None)];
         ObjectDictionary::new(&GENERIC, &[], &[]).unwrap()
     }};
+}
+
+macro_rules! od_1200 {
+    ($rx:expr, $tx:expr) => {
+        od_server!(0x1200, $rx, $tx)
+    };
 }
 
 #[test]
@@ -753,6 +760,57 @@ fn cob_ids_from_0x1200() {
     assert_eq!(ids(od_1200!(0x101, 0x585), 5), (None, None));
     assert_eq!(ids(od_1200!(0x605, 0x102), 5), (None, None));
     assert_eq!(ids(od_1200!(0x001, 0x585), 5), (None, None));
+}
+
+#[test]
+fn additional_server_has_no_predefined_connection() {
+    // CiA 301 7.5.2.33: the predefined connection set belongs to 0x1200
+    // alone; 0x1201.. answer only on the COB-IDs of their objects.
+    let ids = |od: ObjectDictionary, node: u8| {
+        let mut s = SdoServer::with_index(0x1201);
+        s.reconfigure(&od, node);
+        (s.rx_id(), s.tx_id())
+    };
+    assert_eq!(ids(test_od!(), 5), (None, None));
+    assert_eq!(
+        ids(od_server!(0x1201, 0x641, 0x5C1), 5),
+        (CanId::std(0x641), CanId::std(0x5C1))
+    );
+    // 0x600 / 0x580 are identifiers here, not bases for the node-ID.
+    assert_eq!(
+        ids(od_server!(0x1201, 0x600, 0x580), 5),
+        (CanId::std(0x600), CanId::std(0x580))
+    );
+    assert_eq!(
+        ids(od_server!(0x1201, 0x8000_0641u32, 0x5C1), 5),
+        (None, None)
+    );
+    assert_eq!(ids(od_server!(0x1201, 0x101, 0x5C1), 5), (None, None));
+    // Another server's object configures neither channel but its own.
+    let od = od_server!(0x1201, 0x641, 0x5C1);
+    let mut default = SdoServer::new();
+    default.reconfigure(&od, 5);
+    assert_eq!(
+        (default.rx_id(), default.tx_id()),
+        (CanId::std(0x605), CanId::std(0x585))
+    );
+    assert_eq!(ids(od_server!(0x1202, 0x641, 0x5C1), 5), (None, None));
+}
+
+#[test]
+fn one_channel_per_server_object_from_0x1200() {
+    let mut servers = SdoServers::new();
+    assert_eq!(servers.channels().len(), SDO_MAX_SERVER_IN_OBD);
+    for (n, s) in servers.channels().iter().enumerate() {
+        assert_eq!(s.index(), SERVER_PARAMETER_INDEX + n as u16);
+    }
+    let od = test_od!();
+    assert!(servers.receiving(CanId::std_masked(REQ)).is_none());
+    servers.reconfigure(&od, NODE);
+    let s = servers.receiving(CanId::std_masked(REQ)).unwrap();
+    assert_eq!(s.index(), SERVER_PARAMETER_INDEX);
+    assert!(servers.receiving(CanId::std_masked(0x603)).is_none());
+    assert!(servers.at_rest());
 }
 
 #[test]
