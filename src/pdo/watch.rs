@@ -267,3 +267,161 @@ impl Watch {
         self.state = State::Resolved;
     }
 }
+
+#[cfg(test)]
+mod tests {
+    //! The watch alone, on a dictionary of its own: a RAM variable and an
+    //! application variable (`tObdVarEntry`) mapped into one TPDO.
+
+    use core::sync::atomic::{AtomicU8, Ordering};
+
+    use super::*;
+    use crate::od::{Access, DataType, ObdEntry, ObdSubEntry, decl};
+
+    static RAM: [AtomicU8; 1] = decl::zeroed();
+    static VAR: ObdVarEntry = ObdVarEntry::new();
+    static APP_A: [AtomicU8; 2] = decl::zeroed();
+    static APP_B: [AtomicU8; 2] = decl::zeroed();
+    static APP_SHORT: [AtomicU8; 1] = decl::zeroed();
+    static UNATTACHED: ObdVarEntry = ObdVarEntry::new();
+    static WIDE: [AtomicU8; 8] = decl::zeroed();
+    static S2000: [ObdSubEntry; 6] = [
+        ObdSubEntry::rom(0, DataType::UInt8, Access::R, &[5]),
+        ObdSubEntry::ram(1, DataType::UInt8, Access::PRW, &RAM, None),
+        ObdSubEntry::var(2, DataType::UInt16, Access::PRW, &VAR, 2, None),
+        ObdSubEntry::rom(3, DataType::UInt8, Access::PR, &[7]),
+        ObdSubEntry::var(4, DataType::UInt16, Access::PRW, &UNATTACHED, 2, None),
+        ObdSubEntry::ram(5, DataType::UInt64, Access::PRW, &WIDE, None),
+    ];
+    static MANUFACTURER: [ObdEntry; 1] = [ObdEntry::new(0x2000, &S2000, None)];
+    static SERIAL: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+    /// Mapping entries (CiA 301 7.5.2.36: index, subindex, bits).
+    const RAM_U8: u32 = 0x2000_0108;
+    const VAR_U16: u32 = 0x2000_0210;
+    const ROM_U8: u32 = 0x2000_0308;
+    const UNATTACHED_U16: u32 = 0x2000_0410;
+    const WIDE_U64: u32 = 0x2000_0540;
+
+    fn fresh() -> (std::sync::MutexGuard<'static, ()>, ObjectDictionary) {
+        let g = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+        for m in RAM.iter().chain(&APP_A).chain(&APP_B).chain(&APP_SHORT) {
+            m.store(0, Ordering::Relaxed);
+        }
+        assert!(VAR.attach(&APP_A));
+        (g, ObjectDictionary::new(&[], &MANUFACTURER, &[]).unwrap())
+    }
+
+    /// Takes the bytes and a payload (its content does not matter to the
+    /// watch) the way `watched_sample` does; true when watched.
+    fn take(w: &mut Watch, od: &ObjectDictionary, entries: &[u32]) -> bool {
+        let watched = w.take_bytes(od, entries);
+        if watched {
+            w.take(Payload {
+                data: [0xAB; 8],
+                len: 3,
+            });
+        }
+        watched
+    }
+
+    #[test]
+    fn a_change_of_any_watched_byte_is_seen_and_constants_are_no_bytes() {
+        let (_g, od) = fresh();
+        let mut w = Watch::new();
+        assert_eq!(w.unchanged(), None, "nothing taken yet");
+        assert!(take(&mut w, &od, &[RAM_U8, ROM_U8, VAR_U16]));
+        let p = w.unchanged().expect("nothing changed");
+        assert_eq!((p.data[0], p.len), (0xAB, 3), "the payload taken");
+        RAM[0].store(1, Ordering::Relaxed);
+        assert_eq!(w.unchanged(), None, "the RAM byte changed");
+        RAM[0].store(0, Ordering::Relaxed);
+        assert!(w.unchanged().is_some(), "back to the bytes taken");
+        APP_A[1].store(9, Ordering::Relaxed);
+        assert_eq!(
+            w.unchanged(),
+            None,
+            "the application variable's second byte"
+        );
+        assert!(take(&mut w, &od, &[RAM_U8, ROM_U8, VAR_U16]));
+        assert!(w.unchanged().is_some(), "taken again with the new byte");
+    }
+
+    #[test]
+    fn an_application_variable_is_read_through_its_entry_on_every_pass() {
+        let (_g, od) = fresh();
+        let mut w = Watch::new();
+        assert!(take(&mut w, &od, &[VAR_U16, RAM_U8]));
+        // Another variable with the same bytes: the payload is the same.
+        assert!(VAR.attach(&APP_B));
+        assert!(w.unchanged().is_some(), "same bytes, same payload");
+        APP_B[0].store(5, Ordering::Relaxed);
+        assert_eq!(w.unchanged(), None, "the newly attached variable changed");
+        assert!(take(&mut w, &od, &[VAR_U16, RAM_U8]));
+        assert!(w.unchanged().is_some());
+        APP_A[0].store(6, Ordering::Relaxed);
+        assert!(
+            w.unchanged().is_some(),
+            "the variable attached before is no longer read"
+        );
+        // A variable of another size is a change, even with equal bytes.
+        APP_SHORT[0].store(5, Ordering::Relaxed);
+        assert!(VAR.attach(&APP_SHORT));
+        assert_eq!(w.unchanged(), None, "another size");
+        assert!(take(&mut w, &od, &[VAR_U16, RAM_U8]));
+        assert!(w.unchanged().is_some(), "taken with its new size");
+        RAM[0].store(3, Ordering::Relaxed);
+        assert_eq!(
+            w.unchanged(),
+            None,
+            "the RAM byte after the shorter variable"
+        );
+    }
+
+    #[test]
+    fn what_cannot_be_watched_is_sampled_every_time() {
+        let (_g, od) = fresh();
+        // No variable attached yet.
+        let mut w = Watch::new();
+        assert!(!take(&mut w, &od, &[UNATTACHED_U16]));
+        assert_eq!(w.unchanged(), None);
+        // More than the watch's bytes: 8 + 1.
+        let mut w = Watch::new();
+        assert!(!take(&mut w, &od, &[WIDE_U64, RAM_U8]));
+        assert_eq!(w.unchanged(), None);
+        // An object the dictionary does not have.
+        let mut w = Watch::new();
+        assert!(!take(&mut w, &od, &[0x2100_0108]));
+        assert_eq!(w.unchanged(), None);
+        // Exactly the watch's bytes is watched.
+        let mut w = Watch::new();
+        assert!(take(&mut w, &od, &[WIDE_U64]));
+        assert!(w.unchanged().is_some());
+        WIDE[7].store(1, Ordering::Relaxed);
+        assert_eq!(w.unchanged(), None, "the last of eight bytes");
+        WIDE[7].store(0, Ordering::Relaxed);
+    }
+
+    #[test]
+    fn forget_settle_and_quiet() {
+        let (_g, od) = fresh();
+        let mut w = Watch::new();
+        assert!(take(&mut w, &od, &[RAM_U8]));
+        assert!(!w.quiet(), "not settled");
+        w.settle();
+        assert!(w.quiet());
+        RAM[0].store(2, Ordering::Relaxed);
+        assert!(!w.quiet(), "a byte changed");
+        RAM[0].store(0, Ordering::Relaxed);
+        assert!(w.quiet());
+        w.unsettle();
+        assert!(!w.quiet(), "the last sent payload changed");
+        w.settle();
+        w.forget();
+        assert!(!w.quiet() && w.unchanged().is_none(), "forgotten");
+        // A new mapping after forget: the RAM byte is no longer watched.
+        assert!(take(&mut w, &od, &[VAR_U16]));
+        RAM[0].store(4, Ordering::Relaxed);
+        assert!(w.unchanged().is_some(), "0x2000 sub 1 no longer mapped");
+    }
+}
