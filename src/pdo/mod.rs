@@ -1096,6 +1096,7 @@ impl Pdo {
     /// `true` when the cycle's work is complete, `false` after queueing an
     /// event (call again once it was handled). At most one event is queued
     /// per call.
+    #[inline]
     pub fn poll(
         &mut self,
         od: &ObjectDictionary,
@@ -1107,12 +1108,8 @@ impl Pdo {
     ) -> bool {
         if !self.housekeeping_done {
             self.housekeeping_done = true;
-            if self.resubscribe {
-                self.subscribe(port);
-            }
-            if state == NmtState::Operational && !self.quiet {
-                self.check_deadlines(od, port, now, emcy);
-                self.event_timers(now);
+            if self.resubscribe || (state == NmtState::Operational && !self.quiet) {
+                self.housekeeping(od, state, port, now, emcy);
             }
             // `CCM_USE_PDO_CHECK_VAR`: the comparison runs in every cycle
             // (the application may change mapped data without telling, as
@@ -1130,6 +1127,39 @@ impl Pdo {
         if state != NmtState::Operational || self.lock_depth > 0 || self.quiet {
             return true;
         }
+        self.poll_channels(od, port, now, q)
+    }
+
+    /// The first part of [`Pdo::poll`] in a cycle, before the comparison:
+    /// identifiers changed, RPDO deadlines, event timers.
+    #[inline(never)]
+    fn housekeeping(
+        &mut self,
+        od: &ObjectDictionary,
+        state: NmtState,
+        port: &mut impl CanPort,
+        now: Ticks,
+        emcy: &mut EmcyProducer,
+    ) {
+        if self.resubscribe {
+            self.subscribe(port);
+        }
+        if state == NmtState::Operational && !self.quiet {
+            self.check_deadlines(od, port, now, emcy);
+            self.event_timers(now);
+        }
+    }
+
+    /// The channels' work of [`Pdo::poll`], from where the last call
+    /// stopped.
+    #[inline(never)]
+    fn poll_channels(
+        &mut self,
+        od: &ObjectDictionary,
+        port: &mut impl CanPort,
+        now: Ticks,
+        q: &mut ActionQueue,
+    ) -> bool {
         let total = self.rx.len() + self.tx.len();
         while self.cursor < total {
             let i = self.cursor;
@@ -1209,26 +1239,8 @@ impl Pdo {
         for ch in self.tx.iter_mut() {
             // The cheapest test first: a settled watch whose bytes are
             // unchanged has nothing to compare, whatever else holds.
-            if ch.watch.quiet() {
-                continue;
-            }
-            let t = ch.cfg.tx_type;
-            if !ch.usable()
-                || ch.event_pending
-                || !(tx_type::is_event(t) || t == tx_type::SYNC_ACYCLIC)
-            {
-                continue;
-            }
-            if let Ok(p) = watched_sample(od, ch) {
-                if ch.last_sent.is_none() && !signalled {
-                    ch.last_sent = Some(p);
-                    ch.watch.settle();
-                } else if ch.last_sent != Some(p) {
-                    ch.event_pending = true;
-                    marked = true;
-                } else {
-                    ch.watch.settle();
-                }
+            if !ch.watch.quiet() {
+                marked |= compare_with_last_sent(od, ch, signalled);
             }
         }
         marked
@@ -1419,6 +1431,32 @@ fn sample(od: &ObjectDictionary, ch: &TxChannel) -> Result<Payload, CopKernel> {
     }
     p.len = bytes_for_bits(pos);
     Ok(p)
+}
+
+/// The comparison of `CCM_USE_PDO_CHECK_VAR` for one TPDO whose watch is
+/// not quiet: `true` when its payload differs from the last sent one and
+/// a transmission was marked. Out of line, so that the pass over quiet
+/// watches in every cycle stays small.
+#[inline(never)]
+fn compare_with_last_sent(od: &ObjectDictionary, ch: &mut TxChannel, signalled: bool) -> bool {
+    let t = ch.cfg.tx_type;
+    if !ch.usable() || ch.event_pending || !(tx_type::is_event(t) || t == tx_type::SYNC_ACYCLIC) {
+        return false;
+    }
+    let Ok(p) = watched_sample(od, ch) else {
+        return false;
+    };
+    if ch.last_sent.is_none() && !signalled {
+        ch.last_sent = Some(p);
+        ch.watch.settle();
+        false
+    } else if ch.last_sent != Some(p) {
+        ch.event_pending = true;
+        true
+    } else {
+        ch.watch.settle();
+        false
+    }
 }
 
 /// [`sample`] for the comparison of `CCM_USE_PDO_CHECK_VAR`: without

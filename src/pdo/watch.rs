@@ -7,10 +7,12 @@
 //! mapped object, reads its storage and converts it. So while those bytes
 //! are the bytes they were when the payload was sampled, sampling again
 //! gives the same payload, and the comparison of every cycle needs only
-//! one pass over the resolved pieces. Constants (ROM objects, dummy
-//! entries) cannot change and are no pieces. An application variable
-//! (`tObdVarEntry`) is re-read through its entry on every pass, so that
-//! attaching another variable is seen.
+//! one pass over a flat list of byte addresses. Constants (ROM objects,
+//! dummy entries) cannot change and have no bytes in it. A byte of an
+//! application variable (`tObdVarEntry`) is read through its entry on
+//! every pass, so that attaching another variable is seen; such a mapping
+//! is resolved again each time its bytes are taken, with the variables'
+//! sizes of that moment.
 //!
 //! The resolution depends on the mapping and on the dictionary: the PDO
 //! module drops it ([`Watch::forget`]) whenever either may have changed
@@ -52,20 +54,39 @@ impl Watching for Watch {
     }
 }
 
-/// Pieces a watch holds; a mapping with more variables in RAM is compared
-/// by sampling it (as without a watch).
-const PIECES: usize = 8;
-/// Bytes of the pieces together; beyond it, sampling as well.
+/// Bytes a watch holds; a mapping with more bytes of variables in RAM is
+/// compared by sampling it (as without a watch).
 const RAW: usize = 8;
 
-/// Where one mapped variable lives.
+/// One watched byte.
 #[derive(Clone, Copy, Debug)]
-enum Piece {
-    /// A dictionary variable in RAM (native byte order).
-    Ram(&'static [AtomicU8]),
-    /// An application variable attached through a `tObdVarEntry`: the
-    /// entry, and the size it had when the bytes were taken.
-    Var(&'static ObdVarEntry, u8),
+enum Byte {
+    /// A byte of a dictionary variable in RAM (native byte order).
+    Ram(&'static AtomicU8),
+    /// Byte `at` of an application variable attached through a
+    /// `tObdVarEntry`, which had `len` bytes when the bytes were taken.
+    Var {
+        entry: &'static ObdVarEntry,
+        at: u8,
+        len: u8,
+    },
+}
+
+impl Byte {
+    /// The byte now; `None` when an application variable is no longer
+    /// the size it was (detached, or another one attached).
+    #[inline(always)]
+    fn load(self) -> Option<u8> {
+        match self {
+            Byte::Ram(m) => Some(m.load(Ordering::Relaxed)),
+            Byte::Var { entry, at, len } => match entry.data() {
+                Some(m) if m.len() == usize::from(len) => {
+                    m.get(usize::from(at)).map(|b| b.load(Ordering::Relaxed))
+                }
+                _ => None,
+            },
+        }
+    }
 }
 
 /// What a watch knows.
@@ -73,15 +94,16 @@ enum Piece {
 enum State {
     /// Nothing resolved (the mapping or the dictionary changed).
     Unresolved,
-    /// Pieces resolved, no bytes taken.
+    /// Bytes resolved, their values not taken.
     Resolved,
-    /// Bytes taken, the payload not yet.
+    /// Values taken, the payload not yet.
     Ready,
-    /// Pieces resolved and `raw` holds their bytes of the sampled
+    /// Bytes resolved and `raw` holds their values of the sampled
     /// `payload`.
     Taken,
-    /// The mapping has more pieces or bytes than a watch holds, or an
-    /// object that cannot be resolved: every comparison samples.
+    /// The mapping has more bytes than a watch holds, an object that
+    /// cannot be resolved, or an application variable without data:
+    /// every comparison samples.
     Unwatched,
 }
 
@@ -89,9 +111,14 @@ enum State {
 #[derive(Clone, Debug)]
 pub(crate) struct Watch {
     state: State,
+    /// Bytes in `bytes` (and `raw`).
     count: u8,
-    pieces: [Piece; PIECES],
-    /// The bytes of the pieces in order.
+    /// The mapping has application variables: their size and place are
+    /// looked up again whenever the bytes are taken.
+    retake: bool,
+    /// The watched bytes, in mapping order.
+    bytes: [Byte; RAW],
+    /// Their values when the payload was sampled.
     raw: [u8; RAW],
     payload: Payload,
     /// The channel's last sent payload equals `payload` (set by
@@ -99,13 +126,17 @@ pub(crate) struct Watch {
     settled: bool,
 }
 
+/// A placeholder for the unused places of [`Watch::bytes`].
+static NO_BYTE: AtomicU8 = AtomicU8::new(0);
+
 impl Watch {
     /// A watch without resolution.
     pub(crate) const fn new() -> Watch {
         Watch {
             state: State::Unresolved,
             count: 0,
-            pieces: [Piece::Ram(&[]); PIECES],
+            retake: false,
+            bytes: [Byte::Ram(&NO_BYTE); RAW],
             raw: [0; RAW],
             payload: Payload {
                 data: [0; 8],
@@ -161,35 +192,19 @@ impl Watch {
         if self.state != State::Taken {
             return false;
         }
-        // The bytes now against those taken, in the order `take_bytes`
-        // laid them out (resolution made sure they fit).
-        let Some(pieces) = self.pieces.get(..usize::from(self.count)) else {
+        let n = usize::from(self.count);
+        let (Some(bytes), Some(raw)) = (self.bytes.get(..n), self.raw.get(..n)) else {
             return false;
         };
-        let mut taken = self.raw.iter();
-        for piece in pieces {
-            let mem = match *piece {
-                Piece::Ram(m) => m,
-                Piece::Var(v, len) => match v.data() {
-                    Some(m) if m.len() == usize::from(len) => m,
-                    _ => return false,
-                },
-            };
-            for m in mem {
-                if taken.next() != Some(&m.load(Ordering::Relaxed)) {
-                    return false;
-                }
-            }
-        }
-        true
+        bytes.iter().zip(raw).all(|(b, r)| b.load() == Some(*r))
     }
 
-    /// Resolves the mapping if needed and takes the bytes of the pieces,
-    /// before the caller samples (a variable changed in between then
-    /// differs in the next comparison instead of being missed). `false`
-    /// when the mapping is not watched.
+    /// Resolves the mapping if needed and takes the values of the watched
+    /// bytes, before the caller samples (a variable changed in between
+    /// then differs in the next comparison instead of being missed).
+    /// `false` when the mapping is not watched.
     pub(crate) fn take_bytes(&mut self, od: &ObjectDictionary, entries: &[u32]) -> bool {
-        if self.state == State::Unresolved {
+        if self.state == State::Unresolved || self.retake {
             self.resolve(od, entries);
         }
         self.settled = false;
@@ -197,27 +212,13 @@ impl Watch {
             return false;
         }
         self.state = State::Resolved;
+        let n = usize::from(self.count);
         let mut raw = [0u8; RAW];
-        let mut at = 0usize;
-        for piece in self.pieces.iter_mut().take(usize::from(self.count)) {
-            let mem = match piece {
-                Piece::Ram(m) => *m,
-                Piece::Var(v, len) => {
-                    let Some(m) = v.data() else {
-                        return false;
-                    };
-                    let Ok(n) = u8::try_from(m.len()) else {
-                        return false;
-                    };
-                    *len = n;
-                    m
-                }
-            };
-            let Some(dst) = raw.get_mut(at..at + mem.len()) else {
-                return false;
-            };
-            crate::od::value::load(mem, dst);
-            at += mem.len();
+        for (dst, b) in raw.iter_mut().zip(self.bytes.iter().take(n)) {
+            match b.load() {
+                Some(v) => *dst = v,
+                None => return false,
+            }
         }
         self.raw = raw;
         self.state = State::Ready;
@@ -232,38 +233,51 @@ impl Watch {
         }
     }
 
+    /// Finds the bytes of the mapped variables, in mapping order; an
+    /// application variable with the size and place it has now.
     fn resolve(&mut self, od: &ObjectDictionary, entries: &[u32]) {
         self.state = State::Unwatched;
         self.count = 0;
-        let mut bytes = 0usize;
+        self.retake = false;
+        let mut at = 0usize;
         for raw in entries {
             let e = MapEntry::decode(*raw);
             let Ok(obj) = od.find(e.index, e.sub) else {
                 return;
             };
-            let piece = match obj.storage() {
-                Ok(Storage::Rom(_) | Storage::RomString(_)) => continue,
+            match obj.storage() {
+                Ok(Storage::Rom(_) | Storage::RomString(_)) => {}
                 Ok(Storage::Ram(m) | Storage::RamString(m)) => {
-                    bytes += m.len();
-                    Piece::Ram(m)
+                    let Some(dst) = self.bytes.get_mut(at..at + m.len()) else {
+                        return;
+                    };
+                    for (d, b) in dst.iter_mut().zip(m) {
+                        *d = Byte::Ram(b);
+                    }
+                    at += m.len();
                 }
-                Ok(Storage::Var(v)) => {
-                    // Its size is taken with the bytes; the largest it can
-                    // have is what the watch has room for.
-                    bytes += v.data().map_or(0, <[AtomicU8]>::len);
-                    Piece::Var(v, 0)
+                Ok(Storage::Var(entry)) => {
+                    self.retake = true;
+                    // Without data (or empty) there is nothing to compare:
+                    // sampled until a variable is attached.
+                    let Some(m) = entry.data().filter(|m| !m.is_empty()) else {
+                        return;
+                    };
+                    let (Some(dst), Ok(len)) =
+                        (self.bytes.get_mut(at..at + m.len()), u8::try_from(m.len()))
+                    else {
+                        return;
+                    };
+                    for (i, d) in (0u8..).zip(dst.iter_mut()) {
+                        *d = Byte::Var { entry, at: i, len };
+                    }
+                    at += m.len();
                 }
                 Err(_) => return,
-            };
-            let Some(slot) = self.pieces.get_mut(usize::from(self.count)) else {
-                return;
-            };
-            if bytes > RAW {
-                return;
             }
-            *slot = piece;
-            self.count += 1;
         }
+        // `at` <= RAW: every range above was inside `bytes`.
+        self.count = at as u8;
         self.state = State::Resolved;
     }
 }
