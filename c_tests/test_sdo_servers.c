@@ -18,6 +18,10 @@
  * response 0x41 with the size in bytes 4..7, upload segment request 0x60 /
  * 0x70 (toggle), segment response with toggle (bit 4), unused bytes n (bits
  * 3..1) and c (bit 0, last segment); initiate download 0x23 -> 0x60.
+ * While the server exists (bit 31 clear), its COB-IDs keep bits 0..29: a
+ * download of another identifier is aborted with 0x06090030 (value range;
+ * CiA 301 7.5.2.33, the same rule as for PDOs in 7.5.2.35), the way to a new
+ * identifier is bit 31 first.
  */
 #include "test_util.h"
 
@@ -54,6 +58,9 @@ int main (void)
     static CONST BYTE abSetTx[8]   = { 0x23, 0x01, 0x12, 0x02, 0xC1, 0x05, 0x00, 0x00 };
     static CONST BYTE abSetTxOk[8] = { 0x60, 0x01, 0x12, 0x02, 0x00, 0x00, 0x00, 0x00 };
     static CONST BYTE abOff[8]     = { 0x23, 0x01, 0x12, 0x01, 0x41, 0x06, 0x00, 0x80 };
+    /* download 0x1201/1 = 0x00000642 while valid: abort 0x06090030 */
+    static CONST BYTE abMove[8]    = { 0x23, 0x01, 0x12, 0x01, 0x42, 0x06, 0x00, 0x00 };
+    static CONST BYTE abMoveAbort[8] = { 0x80, 0x01, 0x12, 0x01, 0x30, 0x00, 0x09, 0x06 };
     /* segmented upload of 0x1008 "cop test node" (13 bytes) */
     static CONST BYTE abReadName[8] = { 0x40, 0x08, 0x10, 0x00, 0, 0, 0, 0 };
     static CONST BYTE abNameInit[8] = { 0x41, 0x08, 0x10, 0x00, 0x0D, 0x00, 0x00, 0x00 };
@@ -107,6 +114,17 @@ int main (void)
     /* on again, then reset communication restores the dictionary's defaults */
     Exchange("0x1201/1 written again", DEFAULT_RX, abSetRx, DEFAULT_TX, abSetRxOk);
     Exchange("second server on again", SECOND_RX, abReadProduct, SECOND_TX, abProduct);
+
+    /* another identifier while it exists: refused, over SDO and the API */
+    Exchange("0x1201/1 moved while valid", DEFAULT_RX, abMove, DEFAULT_TX, abMoveAbort);
+    dwCobId = SECOND_TX + 1;
+    CHECK_RET(CcmWriteObject(0x1201, 2, &dwCobId, sizeof(dwCobId)), kCopInvalidParam);
+    dwCobId = SECOND_TX;
+    CHECK_RET(CcmWriteObject(0x1201, 2, &dwCobId, sizeof(dwCobId)), kCopSuccessful);
+    Size = sizeof(dwCobId);
+    CHECK_RET(CcmReadObject(0x1201, 1, &dwCobId, &Size), kCopSuccessful);
+    CHECK_EQ(dwCobId, SECOND_RX);
+    Exchange("second server still on its identifiers", SECOND_RX, abReadProduct, SECOND_TX, abProduct);
     SimInject(0x000, 0, 2, abResetComm);
     TestProcess(2);
     TestExpectFrame("boot-up after reset communication", 0x700 + NODE_ID, 1, abBootUp);
