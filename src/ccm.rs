@@ -164,7 +164,7 @@ impl WriteHooks for Hooks<'_> {
             self.pdo.check_write(od, obj, value)?;
         }
         emcy::producer::check_write(obj, value)?;
-        crate::sdo::check_write(obj, value)?;
+        crate::sdo::check_write(od, obj, value)?;
         error_behaviour::check_write(obj, value)?;
         self.store.check_write(od, obj, value, self.state)?;
         Ok(())

@@ -6,7 +6,7 @@ pub use client::SdoClient;
 pub use server::{SdoServer, SdoServers};
 
 use crate::error::OdError;
-use crate::od::{Object, Staged};
+use crate::od::{Object, ObjectDictionary, Staged};
 use crate::wire::pdo::{COB_EXTENDED, COB_INVALID, COB_NO_RTR, is_restricted};
 
 /// First SDO parameter object (server 0x1200..=0x127F, client
@@ -40,19 +40,53 @@ pub fn usable_cob_id(v: u32) -> bool {
 }
 
 /// Module hook: sub 1 and 2 of the SDO parameter objects take only a
-/// [`usable_cob_id`].
-pub fn check_write(obj: &Object, value: &Staged) -> Result<(), OdError> {
+/// [`usable_cob_id`], and while the channel's COB-ID is valid (bit 31
+/// clear) a valid value may not change bits 0..29 (CiA 301 §7.5.2.33 /
+/// §7.5.2.34, as for PDOs in §7.5.2.35): another identifier takes bit 31
+/// first. Bit 30 (dynamic allocation) may change.
+pub fn check_write(od: &ObjectDictionary, obj: &Object, value: &Staged) -> Result<(), OdError> {
     let cob =
         (PARAMETER_FIRST..=PARAMETER_LAST).contains(&obj.index()) && matches!(obj.sub(), 1 | 2);
-    if cob && !value.as_u64().is_some_and(|v| usable_cob_id(v as u32)) {
+    if !cob {
+        return Ok(());
+    }
+    let Some(new) = value
+        .as_u64()
+        .map(|v| v as u32)
+        .filter(|v| usable_cob_id(*v))
+    else {
+        return Err(OdError::VALUE_RANGE);
+    };
+    let cur = od
+        .read_uint(obj.index(), obj.sub())
+        .map_or(COB_INVALID, |v| v as u32);
+    if moved_while_valid(cur, new) {
         return Err(OdError::VALUE_RANGE);
     }
     Ok(())
 }
 
+/// True when both COB-IDs are valid and differ in bits 0..29.
+fn moved_while_valid(cur: u32, new: u32) -> bool {
+    (cur | new) & COB_INVALID == 0 && (cur ^ new) & !COB_NO_RTR != 0
+}
+
 #[cfg(test)]
 mod tests {
-    use super::usable_cob_id;
+    use super::{moved_while_valid, usable_cob_id};
+
+    #[test]
+    fn a_valid_cob_id_keeps_its_identifier() {
+        // CiA 301 §7.5.2.33: bits 0..29 fixed while bit 31 is clear.
+        assert!(moved_while_valid(0x641, 0x642));
+        assert!(moved_while_valid(0x641, 0x2000_0641), "frame format");
+        assert!(!moved_while_valid(0x641, 0x641));
+        assert!(!moved_while_valid(0x641, 0x4000_0641), "bit 30 may change");
+        // Switching bit 31 either way, and any change while invalid.
+        assert!(!moved_while_valid(0x641, 0x8000_0642));
+        assert!(!moved_while_valid(0x8000_0641, 0x642));
+        assert!(!moved_while_valid(0x8000_0000, 0x8000_0642));
+    }
 
     #[test]
     fn sdo_cob_ids_keep_off_the_identifiers_of_other_services() {
