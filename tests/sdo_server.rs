@@ -1010,20 +1010,29 @@ fn explicit_and_changed_cob_ids_from_0x1200() {
     let mut rig = Rig::new(od_with_1200!(0x640, 0x5C0), 3);
     assert_eq!(rig.sdo_on(0x640, 0x5C0, READ_1000), DEVICE_TYPE_RESPONSE);
     rig.sdo_silent(CanFrame::new(CanId::std_masked(0x603), &READ_1000));
-    // Changing 0x1200.2 through SDO: the confirmation still goes out on the
-    // old COB-ID, then the server answers on the new one.
+    // CiA 301 §7.5.2.33: while the COB-ID is valid its identifier stays;
+    // another one is refused (abort 0x06090030) and changes nothing.
     assert_eq!(
         rig.sdo_on(0x640, 0x5C0, [0x23, 0x00, 0x12, 0x02, 0xC1, 0x05, 0, 0]),
-        [0x60, 0x00, 0x12, 0x02, 0, 0, 0, 0]
+        [0x80, 0x00, 0x12, 0x02, 0x30, 0x00, 0x09, 0x06]
     );
-    assert_eq!(rig.sdo_on(0x640, 0x5C1, READ_1000), DEVICE_TYPE_RESPONSE);
+    assert_eq!(rig.sdo_on(0x640, 0x5C0, READ_1000), DEVICE_TYPE_RESPONSE);
     // An identifier CiA 301 §7.3.5 reserves for another service (here
     // COB-ID 2 of SRDO 1 of node 1) is refused (abort 0x06090030, value
     // range) and changes nothing.
     assert_eq!(
-        rig.sdo_on(0x640, 0x5C1, [0x23, 0x00, 0x12, 0x02, 0x02, 0x01, 0, 0]),
+        rig.sdo_on(0x640, 0x5C0, [0x23, 0x00, 0x12, 0x02, 0x02, 0x01, 0, 0]),
         [0x80, 0x00, 0x12, 0x02, 0x30, 0x00, 0x09, 0x06]
     );
+    // Bit 31 of 0x1200.2 through SDO: the confirmation still goes out on
+    // the old COB-ID, then the server is silent.
+    assert_eq!(
+        rig.sdo_on(0x640, 0x5C0, [0x23, 0x00, 0x12, 0x02, 0xC0, 0x05, 0, 0x80]),
+        [0x60, 0x00, 0x12, 0x02, 0, 0, 0, 0]
+    );
+    rig.sdo_silent(CanFrame::new(CanId::std_masked(0x640), &READ_1000));
+    // Now the new identifier is taken, and the server answers on it.
+    rig.set(0x1200, 2, &0x5C1u32.to_le_bytes());
     assert_eq!(rig.sdo_on(0x640, 0x5C1, READ_1000), DEVICE_TYPE_RESPONSE);
     // Bit 31 (CiA 301 object 1200h: not valid) switches the server off.
     rig.set(0x1200, 1, &0x8000_0640u32.to_le_bytes());
