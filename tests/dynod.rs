@@ -503,6 +503,12 @@ fn dictionary_refusals() -> Vec<(Vec<Spec>, CopKernel)> {
 }
 
 node!(refusals);
+
+/// The SDO server and client parameter objects right after the last
+/// channel of this build (CiA 301 7.5.2.33 / 7.5.2.34: 0x1200.. and
+/// 0x1280..).
+const FIRST_SERVER_BEYOND: u16 = 0x1200 + cop::config::SDO_MAX_SERVER_IN_OBD as u16;
+const FIRST_CLIENT_BEYOND: u16 = 0x1280 + cop::config::SDO_MAX_CLIENT_IN_OBD as u16;
 // req: D-2.1.2-PDO-PAIR, D-5.1-CODES
 #[test]
 fn refused_containers_change_nothing() {
@@ -552,6 +558,27 @@ fn refused_containers_change_nothing() {
                 (0x1A08, 0, 0x70, &[0]),
             ],
             CopKernel::CobNoFreeEntry,
+        ),
+        // The first SDO server beyond SDO_MAX_SERVER_IN_OBD (0x1201 by
+        // default) with valid COB-IDs: it would answer nowhere.
+        (
+            vec![
+                (FIRST_SERVER_BEYOND, 0, 0x30, &[3]),
+                (FIRST_SERVER_BEYOND, 1, 0x70, &[0x41, 0x06, 0, 0]),
+                (FIRST_SERVER_BEYOND, 2, 0x70, &[0xC1, 0x05, 0, 0]),
+                (FIRST_SERVER_BEYOND, 3, 0x70, &[0x05]),
+            ],
+            CopKernel::SdosNoFreeEntry,
+        ),
+        // The same for an SDO client beyond SDO_MAX_CLIENT_IN_OBD (0x1284
+        // by default); one valid COB-ID is enough.
+        (
+            vec![
+                (FIRST_CLIENT_BEYOND, 1, 0x70, &[0x05, 0x06, 0, 0x80]),
+                (FIRST_CLIENT_BEYOND, 2, 0x70, &[0x85, 0x05, 0, 0]),
+                (FIRST_CLIENT_BEYOND, 3, 0x70, &[0x05]),
+            ],
+            CopKernel::SdocNoFreeEntry,
         ),
         // Two TPDOs, one COB-ID.
         (

@@ -1042,3 +1042,41 @@ fn explicit_and_changed_cob_ids_from_0x1200() {
     rig.cycle();
     assert_eq!(rig.sdo_on(0x640, 0x5C0, READ_1000), DEVICE_TYPE_RESPONSE);
 }
+
+/// A server parameter object beyond `SDO_MAX_SERVER_IN_OBD` (CiA 301
+/// 7.5.2.33 numbers servers from 0x1200): the stack has no channel for it,
+/// so a valid COB-ID there would be a server that never answers. Such a
+/// write is refused (abort 0x06090030); an invalid value (bit 31) stays
+/// data as before.
+#[test]
+fn a_server_object_without_a_channel_takes_no_valid_cob_id() {
+    const BEYOND: u16 = 0x1200 + cop::config::SDO_MAX_SERVER_IN_OBD as u16;
+    static COUNT: [u8; 1] = [3];
+    static RX: [AtomicU8; 4] = decl::zeroed();
+    static TX: [AtomicU8; 4] = decl::zeroed();
+    static OFF: [u8; 4] = 0x8000_0000u32.to_ne_bytes();
+    static SUBS: [ObdSubEntry; 3] = [
+        ObdSubEntry::rom(0, DataType::UInt8, Access::R, &COUNT),
+        ObdSubEntry::ram(1, DataType::UInt32, Access::RW, &RX, Some(&OFF)),
+        ObdSubEntry::ram(2, DataType::UInt32, Access::RW, &TX, Some(&OFF)),
+    ];
+    cop::od_rom!(static S1000: u32 = 0x0000_0191 => UInt32, R);
+    static GENERIC: [ObdEntry; 2] = [
+        ObdEntry::new(0x1000, &S1000, None),
+        ObdEntry::new(BEYOND, &SUBS, None),
+    ];
+    let mut rig = Rig::new(ObjectDictionary::new(&GENERIC, &[], &[]).unwrap(), 3);
+    let [lo, hi] = BEYOND.to_le_bytes();
+    for sub in [1, 2] {
+        assert_eq!(
+            rig.sdo([0x23, lo, hi, sub, 0x41, 0x06, 0, 0]),
+            [0x80, lo, hi, sub, 0x30, 0x00, 0x09, 0x06],
+            "valid COB-ID in sub {sub}"
+        );
+        assert_eq!(
+            rig.sdo([0x23, lo, hi, sub, 0x41, 0x06, 0, 0x80]),
+            [0x60, lo, hi, sub, 0, 0, 0, 0],
+            "bit 31 set in sub {sub}"
+        );
+    }
+}
