@@ -990,7 +990,39 @@ impl<'a> Plan<'a> {
             )
             .map_err(|_| CopKernel::PdoErrorMapp)?;
         }
+        self.check_sdo_channels(candidate, blame)?;
         *blame = None;
+        Ok(())
+    }
+
+    /// An SDO parameter object the container touches that has no channel
+    /// in this build ([`crate::sdo::without_channel`]) must end with both
+    /// COB-IDs invalid (bit 31): a valid one would name a server or client
+    /// that never answers (`kCopSdosNoFreeEntry` / `kCopSdocNoFreeEntry`).
+    fn check_sdo_channels(
+        &self,
+        candidate: &ObjectDictionary,
+        blame: &mut Option<Blame>,
+    ) -> Result<(), CopKernel> {
+        let first = crate::sdo::PARAMETER_FIRST;
+        for e in self.c.entries_in(first, crate::sdo::PARAMETER_LAST) {
+            let Some(err) = crate::sdo::without_channel(e.index) else {
+                continue;
+            };
+            // A subindex neither the container nor the dictionary has is
+            // no COB-ID.
+            let valid = [1, 2].into_iter().any(|sub| {
+                let value = match self.c.last_occurrence(e.index, sub) {
+                    Some(entry) => Some(value::le_to_u64(entry.data)),
+                    None => candidate.read_uint(e.index, sub).ok(),
+                };
+                value.is_some_and(|v| v as u32 & COB_INVALID == 0)
+            });
+            if valid {
+                *blame = Blame::first_of(&self.c, e.index);
+                return Err(err);
+            }
+        }
         Ok(())
     }
 

@@ -5,7 +5,7 @@ pub mod server;
 pub use client::SdoClient;
 pub use server::{SdoServer, SdoServers};
 
-use crate::error::OdError;
+use crate::error::{CopKernel, OdError, SdoAbort};
 use crate::od::{Object, ObjectDictionary, Staged};
 use crate::wire::pdo::{COB_EXTENDED, COB_INVALID, COB_NO_RTR, is_restricted};
 
@@ -14,6 +14,31 @@ use crate::wire::pdo::{COB_EXTENDED, COB_INVALID, COB_NO_RTR, is_restricted};
 pub const PARAMETER_FIRST: u16 = 0x1200;
 /// Last SDO parameter object.
 pub const PARAMETER_LAST: u16 = 0x12FF;
+/// First SDO client parameter object.
+pub const CLIENT_PARAMETER_FIRST: u16 = 0x1280;
+
+/// The kernel code for an SDO parameter object `index` (sub 1 or 2) that
+/// has no channel in this build: a server beyond `SDO_MAX_SERVER_IN_OBD`
+/// (`kCopSdosNoFreeEntry`) or a client beyond `SDO_MAX_CLIENT_IN_OBD`
+/// (`kCopSdocNoFreeEntry`); `None` for a parameter object with a channel
+/// and for any other index. CiA 301 §7.5.2.33 / §7.5.2.34 number the
+/// channels from 0x1200 and 0x1280.
+pub const fn without_channel(index: u16) -> Option<CopKernel> {
+    use crate::config::{SDO_MAX_CLIENT_IN_OBD, SDO_MAX_SERVER_IN_OBD};
+    if index < PARAMETER_FIRST || index > PARAMETER_LAST {
+        None
+    } else if index < CLIENT_PARAMETER_FIRST {
+        if ((index - PARAMETER_FIRST) as usize) < SDO_MAX_SERVER_IN_OBD {
+            None
+        } else {
+            Some(CopKernel::SdosNoFreeEntry)
+        }
+    } else if ((index - CLIENT_PARAMETER_FIRST) as usize) < SDO_MAX_CLIENT_IN_OBD {
+        None
+    } else {
+        Some(CopKernel::SdocNoFreeEntry)
+    }
+}
 
 /// True when an SDO channel may use the COB-ID `v` (sub 1 or 2 of its
 /// parameter object, CiA 301 §7.5.2.33 / §7.5.2.34): bit 31 set (the
@@ -43,7 +68,9 @@ pub fn usable_cob_id(v: u32) -> bool {
 /// [`usable_cob_id`], and while the channel's COB-ID is valid (bit 31
 /// clear) a valid value may not change bits 0..29 (CiA 301 §7.5.2.33 /
 /// §7.5.2.34, as for PDOs in §7.5.2.35): another identifier takes bit 31
-/// first. Bit 30 (dynamic allocation) may change.
+/// first. Bit 30 (dynamic allocation) may change. An object without a
+/// channel ([`without_channel`]) takes no valid value at all: the channel
+/// would never answer. Each refusal is abort 0x06090030.
 pub fn check_write(od: &ObjectDictionary, obj: &Object, value: &Staged) -> Result<(), OdError> {
     let cob =
         (PARAMETER_FIRST..=PARAMETER_LAST).contains(&obj.index()) && matches!(obj.sub(), 1 | 2);
@@ -57,6 +84,11 @@ pub fn check_write(od: &ObjectDictionary, obj: &Object, value: &Staged) -> Resul
     else {
         return Err(OdError::VALUE_RANGE);
     };
+    if new & COB_INVALID == 0 {
+        if let Some(kernel) = without_channel(obj.index()) {
+            return Err(OdError::new(kernel, SdoAbort::ValueRange));
+        }
+    }
     let cur = od
         .read_uint(obj.index(), obj.sub())
         .map_or(COB_INVALID, |v| v as u32);
@@ -74,6 +106,31 @@ fn moved_while_valid(cur: u32, new: u32) -> bool {
 #[cfg(test)]
 mod tests {
     use super::{moved_while_valid, usable_cob_id};
+
+    #[test]
+    fn parameter_objects_beyond_the_channels_have_none() {
+        use super::without_channel;
+        use crate::config::{SDO_MAX_CLIENT_IN_OBD, SDO_MAX_SERVER_IN_OBD};
+        use crate::error::CopKernel;
+        let servers = SDO_MAX_SERVER_IN_OBD as u16;
+        let clients = SDO_MAX_CLIENT_IN_OBD as u16;
+        assert_eq!(without_channel(0x1200), None);
+        assert_eq!(without_channel(0x1200 + servers - 1), None);
+        assert_eq!(
+            without_channel(0x1200 + servers),
+            Some(CopKernel::SdosNoFreeEntry)
+        );
+        assert_eq!(without_channel(0x127F), Some(CopKernel::SdosNoFreeEntry));
+        assert_eq!(without_channel(0x1280), None);
+        assert_eq!(without_channel(0x1280 + clients - 1), None);
+        assert_eq!(
+            without_channel(0x1280 + clients),
+            Some(CopKernel::SdocNoFreeEntry)
+        );
+        assert_eq!(without_channel(0x12FF), Some(CopKernel::SdocNoFreeEntry));
+        assert_eq!(without_channel(0x11FF), None);
+        assert_eq!(without_channel(0x1300), None);
+    }
 
     #[test]
     fn a_valid_cob_id_keeps_its_identifier() {
