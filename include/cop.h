@@ -148,7 +148,8 @@ tCopKernel CcmConfigEmcp(DWORD dwEmcpProducerCobId_p);
 /**
  * `CcmSendEmergency`: sends an emergency message and records it in
  * 0x1001/0x1003. kCopInvalidParam for NULL, kCopNmtStateError when not
- * connected or STOPPED, kCopNoResource when the inhibit-time queue is full.
+ * connected or STOPPED, kCopNoResource when the inhibit-time queue is full,
+ * kCopCobIllegalCanId when the producer is switched off (0x1014 bit 31).
  *
  * # Safety
  * `pEmcpParam_p` must be NULL or point to a valid `tEmcParam`.

@@ -296,7 +296,8 @@ pub extern "C" fn CcmConfigEmcp(dwEmcpProducerCobId_p: DWORD) -> tCopKernel {
 
 /// `CcmSendEmergency`: sends an emergency message and records it in
 /// 0x1001/0x1003. kCopInvalidParam for NULL, kCopNmtStateError when not
-/// connected or STOPPED, kCopNoResource when the inhibit-time queue is full.
+/// connected or STOPPED, kCopNoResource when the inhibit-time queue is full,
+/// kCopCobIllegalCanId when the producer is switched off (0x1014 bit 31).
 ///
 /// # Safety
 /// `pEmcpParam_p` must be NULL or point to a valid `tEmcParam`.
