@@ -166,6 +166,7 @@ impl WriteHooks for Hooks<'_> {
         emcy::producer::check_write(obj, value)?;
         crate::sdo::check_write(od, obj, value)?;
         error_behaviour::check_write(obj, value)?;
+        self.syncp.check_write(obj, value)?;
         self.store.check_write(od, obj, value, self.state)?;
         Ok(())
     }
@@ -193,6 +194,7 @@ impl WriteHooks for Hooks<'_> {
                 self.syncp.reconfigure(od, self.now);
                 self.pdo.after_store(od, obj, self.now);
             }
+            sync::producer::COUNTER_OVERFLOW_INDEX => self.syncp.reconfigure(od, self.now),
             store::LOAD_INDEX | store::SAVE_INDEX => self.store.after_store(od, obj),
             // SDO server 0x1200..0x127F, SDO client 0x1280..0x12FF.
             0x1200..=0x12FF => self.sdo_changed = true,

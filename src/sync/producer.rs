@@ -22,15 +22,32 @@
 //!   period later (no burst).
 //! * A SYNC the driver refuses is not repeated (the next one keeps the
 //!   phase).
-//! * Bit 31 of the COB-ID is "do not care" (CiA 301 7.5.2.5); the
-//!   synchronous counter (0x1019) is not supported: SYNC frames carry no
-//!   data.
+//! * Bit 31 of the COB-ID is "do not care" (CiA 301 7.5.2.5).
+//!
+//! # Synchronous counter (0x1019)
+//! Where the dictionary has the synchronous counter overflow value 0x1019
+//! (UNSIGNED8, CiA 301 7.5.2.22), it shapes the frame: 0 gives SYNC without
+//! data, 2..=240 a SYNC of DLC 1 whose byte counts 1, 2, ... up to the value
+//! and starts at 1 again. 1 and 241..=255 are reserved.
+//! * A write of a reserved value is refused with abort 0x06090030
+//!   (`kCopInvalidParam`); a write while the communication cycle period in
+//!   force is not 0 with abort 0x08000022 (`kCopInvalidParam`): the counter
+//!   changes only while no SYNC is produced. A DCF therefore sets 0x1019
+//!   before it gives 0x1006 a period. A dictionary default of a reserved
+//!   value acts as 0 (no counter).
+//! * The counter starts again at 1 whenever production starts or the
+//!   COB-ID, the period or 0x1019 change, and at reset communication; a
+//!   change of the NMT state alone keeps it (the node produces only in
+//!   PRE-OPERATIONAL and OPERATIONAL, and continues where it was).
+//! * It counts every SYNC period: a SYNC the driver refuses takes its
+//!   number with it, so the consumers see the gap.
 //! * Where the dictionary has 0x1005 / 0x1006 they are the configuration
 //!   (also when written over SDO); otherwise the values of
 //!   `CcmConfigSyncProducer` are kept here and reset with the communication
 //!   objects.
 
-use crate::od::ObjectDictionary;
+use crate::error::{CopKernel, OdError, SdoAbort};
+use crate::od::{Object, ObjectDictionary, Staged};
 use crate::port::{CanFrame, CanId, CanPort, Priority, Ticks};
 use crate::wire::pdo::{COB_INVALID, COB_NO_RTR, SYNC_DEFAULT_COB_ID, check_identifier};
 
@@ -38,6 +55,10 @@ use crate::wire::pdo::{COB_INVALID, COB_NO_RTR, SYNC_DEFAULT_COB_ID, check_ident
 pub const COB_ID_SYNC_INDEX: u16 = 0x1005;
 /// Communication cycle period (µs).
 pub const CYCLE_PERIOD_INDEX: u16 = 0x1006;
+/// Synchronous counter overflow value.
+pub const COUNTER_OVERFLOW_INDEX: u16 = 0x1019;
+/// Largest counter overflow value (CiA 301 7.5.2.22).
+pub const COUNTER_OVERFLOW_MAX: u8 = 240;
 /// COB-ID bit 30: this node produces SYNC (`CANID_SYNC_PRODUCER`).
 pub const SYNC_PRODUCER: u32 = COB_NO_RTR;
 /// Microseconds per stack tick.
@@ -51,6 +72,17 @@ pub const fn cycle_ticks(cycle_us: u32) -> u32 {
         1
     } else {
         cycle_us / US_PER_TICK
+    }
+}
+
+/// The counter overflow value `value` of 0x1019 stands for: `Some(0)` for
+/// SYNC without counter, `Some(n)` for a counter 1..=n, `None` for the
+/// reserved values 1 and 241..=255 (and anything wider than a byte).
+pub const fn counter_overflow(value: u64) -> Option<u8> {
+    match value {
+        0 => Some(0),
+        2..=240 => Some(value as u8),
+        _ => None,
     }
 }
 
@@ -78,6 +110,10 @@ pub struct SyncProducer {
     id: Option<CanId>,
     period: u32,
     next: Ticks,
+    /// 0x1019 in force: 0 without counter, else the counter's last value.
+    overflow: u8,
+    /// The counter of the last SYNC sent, 0 before the first one.
+    counter: u8,
 }
 
 crate::od::decl::default_is_new!(SyncProducer);
@@ -93,6 +129,8 @@ impl SyncProducer {
             id: None,
             period: 0,
             next: Ticks(0),
+            overflow: 0,
+            counter: 0,
         }
     }
 
@@ -118,12 +156,27 @@ impl SyncProducer {
         self.own_cycle_us = cycle_us;
     }
 
-    /// Takes the configuration from 0x1005 / 0x1006 where they exist (the
-    /// kept values otherwise). A changed identifier or period restarts the
-    /// schedule: the next SYNC follows one period after `now`.
+    /// The counter overflow value in force (0x1019; 0: no counter).
+    pub fn counter_overflow(&self) -> u8 {
+        self.overflow
+    }
+
+    /// Takes the configuration from 0x1005 / 0x1006 / 0x1019 where they
+    /// exist (the kept values otherwise). A changed identifier or period
+    /// restarts the schedule: the next SYNC follows one period after `now`;
+    /// the counter starts again with it and with a changed 0x1019.
     pub fn reconfigure(&mut self, od: &ObjectDictionary, now: Ticks) {
         self.cob = od.read_or(COB_ID_SYNC_INDEX, 0, self.own_cob);
         self.cycle_us = od.read_or(CYCLE_PERIOD_INDEX, 0, self.own_cycle_us);
+        let overflow = od
+            .read_uint(COUNTER_OVERFLOW_INDEX, 0)
+            .ok()
+            .and_then(counter_overflow)
+            .unwrap_or(0);
+        if overflow != self.overflow {
+            self.overflow = overflow;
+            self.counter = 0;
+        }
         let produce = self.cob & SYNC_PRODUCER != 0 && usable_cob_id(self.cob);
         let id = produce.then(|| CanId::from_cob_id(self.cob & !(COB_INVALID | COB_NO_RTR)));
         let period = if id.is_some() {
@@ -136,7 +189,24 @@ impl SyncProducer {
             self.id = id;
             self.period = period;
             self.next = now.plus(period);
+            self.counter = 0;
         }
+    }
+
+    /// Refuses a write of 0x1019 with a reserved value (0x06090030) or
+    /// while the communication cycle period in force is not 0
+    /// (0x08000022); other objects pass.
+    pub fn check_write(&self, obj: &Object, value: &Staged) -> Result<(), OdError> {
+        if obj.index() != COUNTER_OVERFLOW_INDEX || obj.sub() != 0 {
+            return Ok(());
+        }
+        if value.as_u64().and_then(counter_overflow).is_none() {
+            return Err(OdError::VALUE_RANGE);
+        }
+        if self.cycle_us != 0 {
+            return Err(OdError::new(CopKernel::InvalidParam, SdoAbort::DeviceState));
+        }
+        Ok(())
     }
 
     /// Reset communication: stops producing and forgets the kept values
@@ -160,7 +230,17 @@ impl SyncProducer {
         if !operating || self.next.is_after(now) {
             return false;
         }
-        let sent = port.send(&CanFrame::new(id, &[]), Priority::High).is_ok();
+        let frame = if self.overflow == 0 {
+            CanFrame::new(id, &[])
+        } else {
+            self.counter = if self.counter >= self.overflow {
+                1
+            } else {
+                self.counter + 1
+            };
+            CanFrame::new(id, &[self.counter])
+        };
+        let sent = port.send(&frame, Priority::High).is_ok();
         let next = self.next.plus(self.period);
         self.next = if now.reached(next) {
             now.plus(self.period)
@@ -182,6 +262,18 @@ mod tests {
         p.set_own(cob, cycle_us);
         p.reconfigure(&ObjectDictionary::empty(), Ticks(0));
         p
+    }
+
+    #[test]
+    fn counter_overflow_values_of_cia_301() {
+        // CiA 301 7.5.2.22: 0 no counter, 2..=240 the counter's last value,
+        // 1 and 241..=255 reserved.
+        assert_eq!(counter_overflow(0), Some(0));
+        assert_eq!(counter_overflow(2), Some(2));
+        assert_eq!(counter_overflow(240), Some(240));
+        for v in [1, 241, 255, 256, u64::MAX] {
+            assert_eq!(counter_overflow(v), None, "{v}");
+        }
     }
 
     #[test]
