@@ -2,7 +2,8 @@
 // CCM services (test_services_api.c): pre-defined error field 0x1003, SYNC
 // 0x1005/0x1006, guard time 0x100C, life time factor 0x100D, store 0x1010,
 // restore 0x1011, EMCY COB-ID 0x1014 (default 0x80000000, no producer, as
-// in the AWorks dictionaries), heartbeat 0x1017, error behaviour 0x1029
+// in the AWorks dictionaries), heartbeat 0x1017, synchronous counter
+// overflow value 0x1019 (default 0), error behaviour 0x1029
 // (sub 1 default 0x01: no state change), SDO server, and a
 // synchronous TPDO 1 (type 1) mapping 0x2070/1 (bServicesOut_g). The stack
 // callbacks are attached as SYS TEC objdict.h files do. Init function
@@ -69,6 +70,10 @@ OBD_BEGIN ()
         OBD_BEGIN_INDEX_RAM(0x1017, 0x01, HbpCbConfigHeartbeat)
             OBD_SUBINDEX_RAM_VAR(0x1017, 0x00, 0x06, 0x83, tObdUnsigned16, Producer_Heartbeat_Time, 0x0)
         OBD_END_INDEX(0x1017)
+
+        OBD_BEGIN_INDEX_RAM(0x1019, 0x01, NULL)
+            OBD_SUBINDEX_RAM_VAR(0x1019, 0x00, 0x05, 0x03, tObdUnsigned8, Synchronous_Counter_Overflow_Value, 0x00)
+        OBD_END_INDEX(0x1019)
 
         OBD_BEGIN_INDEX_RAM(0x1029, 0x02, NULL)
             OBD_SUBINDEX_ROM_VAR(0x1029, 0x00, 0x05, 0x01, tObdUnsigned8, Number_of_Error_Classes, 0x01)

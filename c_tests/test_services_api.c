@@ -335,6 +335,9 @@ static void LifeGuarding (void)
 static void SyncProducer (void)
 {
     tSimFrame Frame;
+    BYTE bValue;
+    BYTE bCount;
+    BYTE abCounter[1];
 
     SimSelectNode(SIM_P);
     CHECK_RET(CcmConfigSyncProducer(0x40000701UL, 1000), kCopInvalidParam);   /* restricted */
@@ -358,6 +361,30 @@ static void SyncProducer (void)
     CHECK_EQ(Frame.m_dwId, 0x180 + ID_P);
     CHECK_EQ(Frame.m_bDlc, 1);
     CHECK_EQ(Frame.m_abData[0], 0x5A);
+
+    /* 0x1019 (CiA 301 7.5.2.22): written only while the cycle period is 0
+     * (0x08000022), 1 and 241..255 reserved (0x06090030); with 3 the SYNC
+     * carries a counter 1, 2, 3, 1 (CiA 301 7.2.5.2.1) */
+    bValue = 3;
+    CHECK_RET(CcmWriteObject(0x1019, 0, &bValue, 1), kCopInvalidParam);
+    SdoDownload(0x1019, 0, 3, 1, 0x08000022UL);
+    CHECK_RET(CcmConfigSyncProducer(0x40000080UL, 0), kCopSuccessful);
+    SdoDownload(0x1019, 0, 1, 1, 0x06090030UL);
+    SdoDownload(0x1019, 0, 241, 1, 0x06090030UL);
+    CHECK_EQ(TestReadU8(0x1019, 0), 0);
+    CHECK_RET(CcmWriteObject(0x1019, 0, &bValue, 1), kCopSuccessful);
+    CHECK_RET(CcmConfigSyncProducer(0x40000080UL, 10000), kCopSuccessful);
+    TestDrainSent();
+    for (bCount = 1; bCount <= 4; bCount++)
+    {
+        abCounter[0] = (BYTE) (((bCount - 1) % 3) + 1);
+        Run(10);
+        TestExpectFrame("SYNC with counter", 0x080, 1, abCounter);
+        TestDrainSent();
+    }
+    CHECK_RET(CcmConfigSyncProducer(0x40000080UL, 0), kCopSuccessful);
+    bValue = 0;
+    CHECK_RET(CcmWriteObject(0x1019, 0, &bValue, 1), kCopSuccessful);
 
     /* without bit 30 this node sends no SYNC */
     CHECK_RET(CcmConfigSyncProducer(0x80, 10000), kCopSuccessful);

@@ -131,110 +131,41 @@ fn same_enum<T: Copy + Debug>(
     }
 }
 
+/// [`same_enum`] for a `c_enum!` type: its values, `code()` and its
+/// decoder (`$decode`, taking `$arg`).
+macro_rules! same_c_enum {
+    ($h:expr, $prefix:literal, $enum:ident::$decode:ident($arg:ty)) => {
+        same_enum(
+            &$h,
+            $prefix,
+            $enum::ALL,
+            |v| v.code().into(),
+            |n| <$arg>::try_from(n).ok().and_then($enum::$decode).is_some(),
+        )
+    };
+}
+
 #[test]
 fn result_codes() {
     let h = Header::cop_types();
-    same_enum(
-        &h,
-        "kCop",
-        CopKernel::ALL,
-        |v| v.code().into(),
-        |n| {
-            u32::try_from(n)
-                .ok()
-                .and_then(CopKernel::from_code)
-                .is_some()
-        },
-    );
+    same_c_enum!(h, "kCop", CopKernel::from_code(u32));
 }
 
 #[test]
 fn nmt_states_events_and_commands() {
     let h = Header::cop_types();
-    same_enum(
-        &h,
-        "kNodeState",
-        NmtState::ALL,
-        |v| v.code().into(),
-        |n| u8::try_from(n).ok().and_then(NmtState::from_u8).is_some(),
-    );
-    same_enum(
-        &h,
-        "kNmtEv",
-        NmtEvent::ALL,
-        |v| v.code().into(),
-        |n| u8::try_from(n).ok().and_then(NmtEvent::from_u8).is_some(),
-    );
-    same_enum(
-        &h,
-        "kNmtErrCtrlEv",
-        ErrCtrlEvent::ALL,
-        |v| v.code().into(),
-        |n| {
-            u8::try_from(n)
-                .ok()
-                .and_then(ErrCtrlEvent::from_u8)
-                .is_some()
-        },
-    );
-    same_enum(
-        &h,
-        "kNmtComm",
-        NmtCommand::ALL,
-        |v| v.code().into(),
-        |n| {
-            u16::try_from(n)
-                .ok()
-                .and_then(NmtCommand::from_u16)
-                .is_some()
-        },
-    );
+    same_c_enum!(h, "kNodeState", NmtState::from_u8(u8));
+    same_c_enum!(h, "kNmtEv", NmtEvent::from_u8(u8));
+    same_c_enum!(h, "kNmtErrCtrlEv", ErrCtrlEvent::from_u8(u8));
+    same_c_enum!(h, "kNmtComm", NmtCommand::from_u16(u16));
 }
 
 #[test]
-fn program_monitor_events() {
+fn program_monitor_events_data_types_and_sdo_client_states() {
     let h = Header::cop_types();
-    same_enum(
-        &h,
-        "kSrdoPMEv",
-        ProgMonEvent::ALL,
-        |v| v.code().into(),
-        |n| {
-            u8::try_from(n)
-                .ok()
-                .and_then(ProgMonEvent::from_u8)
-                .is_some()
-        },
-    );
-}
-
-#[test]
-fn data_types() {
-    let h = Header::cop_types();
-    same_enum(
-        &h,
-        "kObdTyp",
-        DataType::ALL,
-        |v| v.code().into(),
-        |n| {
-            u16::try_from(n)
-                .ok()
-                .and_then(DataType::from_code)
-                .is_some()
-        },
-    );
-}
-
-#[test]
-fn sdo_client_transfer_states() {
-    let h = Header::cop_types();
-    same_enum(
-        &h,
-        "kSdocTransfer",
-        SdocState::ALL,
-        |v| v.code().into(),
-        |n| u8::try_from(n).ok().and_then(SdocState::from_u8).is_some(),
-    );
+    same_c_enum!(h, "kSrdoPMEv", ProgMonEvent::from_u8(u8));
+    same_c_enum!(h, "kObdTyp", DataType::from_code(u16));
+    same_c_enum!(h, "kSdocTransfer", SdocState::from_u8(u8));
 }
 
 /// The Rust names of the abort codes are not the sdoac.h names, so the
