@@ -41,7 +41,9 @@ DWORD CopGetStackVersion(void);
  * `m_fpObdInitRam`); kCopWrongSignature (objdef.h built with another
  * configuration than the library); kCopObdIllegalPart /
  * kCopObdUnknownObjectType (a dictionary table is unsorted or malformed);
- * kCopInvalidNodeId (node-ID not 1..127); kCopNoFreeInstance (already
+ * kCopInvalidNodeId (node-ID not 1..127, or 0xFF where the build has the
+ * LSS slave, `CCM_MODULE_LSSS` in `CCM_MODULE_INTEGRATION`: a node
+ * without node-ID, see `CcmProcessLssInitState`); kCopNoFreeInstance (already
  * initialised); the driver's code from `CdrvInit`; an SRDO configuration
  * code from the SRDO module.
  *
@@ -58,7 +60,8 @@ tCopKernel CcmShutDownCANopen(void);
 
 /**
  * `CcmConnectToNet`: INITIALISATION -> PRE-OPERATIONAL (boot-up message,
- * kNmtEvEnterPreOperational). kCopNmtStateError when already connected.
+ * kNmtEvEnterPreOperational). kCopNmtStateError when already connected,
+ * kCopLsssInvalidNodeId while the node has no node-ID (LSS).
  */
 tCopKernel CcmConnectToNet(void);
 
@@ -71,6 +74,18 @@ tCopKernel CcmConnectToNet(void);
  * also been told through `AppSrdoError` itself).
  */
 tCopKernel CcmProcess(void);
+
+/**
+ * `CcmProcessLssInitState`: one processing cycle (as `CcmProcess`) of a
+ * node started without node-ID (0xFF, LSS slave built in), before
+ * `CcmConnectToNet`: only LSS requests (CiA 305) are answered. Returns
+ * kCopLsssInvalidNodeId while the node has no node-ID; kCopSuccessful once
+ * an LSS master gave it one and switched the LSS state back to waiting
+ * (the node took it with a reset communication, whose NMT events ran in
+ * this call), and for a node that has one from the start;
+ * kCopIllegalInstance before `CcmInitCANopen`.
+ */
+tCopKernel CcmProcessLssInitState(void);
 
 /**
  * `CcmReadObject`: copies the value of an object (CPU byte order) into

@@ -28,15 +28,17 @@ use crate::emcy::{self, EmcyConsumer, EmcyProducer};
 use crate::error::{CopKernel, CopResult, OdError};
 use crate::event::{Action, ActionQueue, Event, Internal, NmtEvent, NmtState};
 use crate::heartbeat::{self, HeartbeatConsumer, HeartbeatProducer};
+use crate::nmt::lss::{self, LssSlave};
 use crate::nmt::slave::{self, Transition};
 use crate::nmt::{LifeGuardSlave, NmtMaster, error_behaviour, lifeguard};
 use crate::od::{ByteOrder, Object, ObjectDictionary, Staged, WriteHooks};
 use crate::pdo::Pdo;
-use crate::port::{CanId, CanPort, Priority, RxFrame, Ticks};
+use crate::port::{CanFrame, CanId, CanPort, Priority, RxFrame, Ticks};
 use crate::sdo::{SdoClient, SdoServers};
 use crate::srdo::{Received, Srdo};
 use crate::store::{self, StoreRestore};
 use crate::sync::{self, SyncProducer};
+use crate::wire;
 use crate::wire::emcy::Emergency;
 use crate::wire::nmt::{self, NmtCs};
 use crate::wire::srdo::{COB_ID_COUNT, COB_ID_MIN, GFC_ID};
@@ -107,6 +109,8 @@ pub struct Stack {
     lgs: LifeGuardSlave,
     syncp: SyncProducer,
     store: StoreRestore,
+    /// The LSS slave, where the build serves LSS (`Stack::with_lss`).
+    lss: Option<LssSlave>,
     /// The dynamic object dictionary in force (`DynBuildOd`).
     dynamic: Option<crate::od::dynamic::Installed>,
 }
@@ -238,6 +242,7 @@ impl Stack {
             lgs: LifeGuardSlave::new(),
             syncp: SyncProducer::new(),
             store: StoreRestore::new(),
+            lss: None,
             dynamic: None,
         };
         s.srdo.init(&s.od)?;
@@ -246,12 +251,44 @@ impl Stack {
         Ok(s)
     }
 
+    /// [`Stack::new`] with the LSS slave (CiA 305, [`crate::nmt::lss`]):
+    /// `node_id` may also be 0xFF, a node without node-ID, which answers
+    /// only LSS until a master gives it one ([`Stack::lss_init_state`]).
+    pub fn with_lss(od: ObjectDictionary, node_id: u8) -> CopResult<Stack> {
+        let valid = if node_id == lss::UNCONFIGURED {
+            1
+        } else {
+            node_id
+        };
+        let mut s = Stack::new(od, valid)?;
+        s.node_id = node_id;
+        s.lss = Some(LssSlave::new(node_id));
+        Ok(s)
+    }
+
+    /// `CcmProcessLssInitState`'s answer after a cycle: `kCopLsssInvalidNodeId`
+    /// while the node has no node-ID (0xFF), success once it has one.
+    pub fn lss_init_state(&self) -> CopResult {
+        if self.node_id == lss::UNCONFIGURED {
+            Err(CopKernel::LsssInvalidNodeId)
+        } else {
+            Ok(())
+        }
+    }
+
+    /// The LSS slave, where the stack has one.
+    pub fn lss(&self) -> Option<&LssSlave> {
+        self.lss.as_ref()
+    }
+
     /// `CcmConnectToNet`: leave INITIALISATION (boot-up message, then
-    /// PRE-OPERATIONAL). `kCopNmtStateError` when already connected.
+    /// PRE-OPERATIONAL). `kCopNmtStateError` when already connected,
+    /// `kCopLsssInvalidNodeId` while the node has no node-ID (LSS).
     pub fn connect(&mut self) -> CopResult {
         if self.connected {
             return Err(CopKernel::NmtStateError);
         }
+        self.lss_init_state()?;
         self.connected = true;
         if self.queue.is_empty() && self.state == NmtState::Initialisation {
             self.queue_state(NmtState::PreOperational);
@@ -686,10 +723,14 @@ impl Stack {
     /// the node is PRE-OPERATIONAL or OPERATIONAL.
     #[inline(never)]
     fn on_other_frame(&mut self, port: &mut impl CanPort, rx: &RxFrame, now: Ticks) {
+        let f = &rx.frame;
+        if self.lss.is_some() && f.id == CanId::std_masked(wire::lss::MASTER_TO_SLAVE) {
+            self.on_lss_frame(port, f);
+            return;
+        }
         if !self.connected || self.state == NmtState::Initialisation {
             return;
         }
-        let f = &rx.frame;
         if srdo_or_gfc_id(f.id) {
             // STOPPED: neither the SRDO module nor the services take it.
             return;
@@ -724,6 +765,24 @@ impl Stack {
         }
         // (The SRDO module takes only the identifiers handled above.)
         self.on_service_frame(port, rx, now);
+    }
+
+    /// An LSS request (CiA 305), in every NMT state and before
+    /// `CcmConnectToNet`.
+    #[inline(never)]
+    fn on_lss_frame(&mut self, port: &mut impl CanPort, f: &CanFrame) {
+        let (Some(lss), Some(req)) = (self.lss.as_mut(), wire::lss::decode_request(f)) else {
+            return;
+        };
+        let address = [1, 2, 3, 4].map(|sub| self.od.read_or(lss::IDENTITY_INDEX, sub, 0u32));
+        let outcome = lss.on_request(req, address, self.node_id);
+        if let Some(answer) = outcome.answer {
+            let _ = port.send(&answer, Priority::Low);
+        }
+        if outcome.take_node_id {
+            // The reset communication takes the pending node-ID.
+            self.queue_reset(false);
+        }
     }
 
     /// The rest of [`Stack::on_frame`]: PDO, SDO client and SDO server.
@@ -802,6 +861,10 @@ impl Stack {
                 self.store.load_parts(&self.od, store::part::APP);
             }
             Internal::RestoreCommunication => {
+                if let Some(lss) = &self.lss {
+                    // CiA 305: the pending node-ID becomes the node's now.
+                    self.node_id = lss.pending_node_id();
+                }
                 self.restore_defaults(0x1000, 0x1FFF);
                 self.store.restored(store::part::GEN);
                 self.store.load_parts(&self.od, store::part::GEN);
@@ -900,6 +963,9 @@ impl Stack {
     /// subscribes its own COB-IDs.
     fn subscribe(&mut self, port: &mut impl CanPort) {
         let _ = port.subscribe(CanId::std_masked(nmt::NMT_COB_ID), Priority::High);
+        if self.lss.is_some() {
+            let _ = port.subscribe(CanId::std_masked(wire::lss::MASTER_TO_SLAVE), Priority::Low);
+        }
         // Error control of every other node: guarding requests to this node,
         // heartbeats for the consumer, boot-ups and guard answers for the
         // master.

@@ -1,7 +1,7 @@
 /*
  * copcfg.h of the C tests: the switches of a safety slave (SRDO with GFC
  * and program monitoring, dynamic SRDO mapping, granularity 8, objects up
- * to 255 bytes). The test library is built from this folder.
+ * to 255 bytes) with the LSS slave. The test library is built from this folder.
  */
 #ifndef COPCFG_H
 #define COPCFG_H
@@ -9,8 +9,9 @@
 #define COP_MAX_INSTANCES          1
 #define COP_USE_CDRV_FUNCTION_POINTER FALSE
 #define COP_USE_SMALL_TIME         FALSE
-#define CCM_MODULE_INTEGRATION     (CCM_MODULE_NMTS | CCM_MODULE_HBP | CCM_MODULE_HBC | \
-                                    CCM_MODULE_PDO | CCM_MODULE_SDOC | CCM_MODULE_SRDO)
+#define CCM_MODULE_INTEGRATION     (CCM_MODULE_LSSS | CCM_MODULE_NMTS | CCM_MODULE_HBP | \
+                                    CCM_MODULE_HBC | CCM_MODULE_PDO | CCM_MODULE_SDOC | \
+                                    CCM_MODULE_SRDO)
 
 #define CDRV_CAN_SPEC              CAN20A
 #define CDRV_USE_HIGHBUFF          TRUE

@@ -42,7 +42,9 @@ pub extern "C" fn CopGetStackVersion() -> DWORD {
 /// `m_fpObdInitRam`); kCopWrongSignature (objdef.h built with another
 /// configuration than the library); kCopObdIllegalPart /
 /// kCopObdUnknownObjectType (a dictionary table is unsorted or malformed);
-/// kCopInvalidNodeId (node-ID not 1..127); kCopNoFreeInstance (already
+/// kCopInvalidNodeId (node-ID not 1..127, or 0xFF where the build has the
+/// LSS slave, `CCM_MODULE_LSSS` in `CCM_MODULE_INTEGRATION`: a node
+/// without node-ID, see `CcmProcessLssInitState`); kCopNoFreeInstance (already
 /// initialised); the driver's code from `CdrvInit`; an SRDO configuration
 /// code from the SRDO module.
 ///
@@ -109,7 +111,11 @@ fn init(p: &tCcmInitParam) -> CopResult {
         m_TxBuffLow: ram.m_TxBuffLow,
         m_fpEnableInterrupt: p.m_fpCanInterruptEnable,
     };
-    let stack = Stack::new(od, p.m_bInitNodeId)?;
+    let stack = if crate::config::CCM_MODULE_LSSS {
+        Stack::with_lss(od, p.m_bInitNodeId)?
+    } else {
+        Stack::new(od, p.m_bInitNodeId)?
+    };
     driver::init(&mut cdrv)?;
     global::install(Instance {
         stack,
@@ -134,7 +140,8 @@ pub extern "C" fn CcmShutDownCANopen() -> tCopKernel {
 }
 
 /// `CcmConnectToNet`: INITIALISATION -> PRE-OPERATIONAL (boot-up message,
-/// kNmtEvEnterPreOperational). kCopNmtStateError when already connected.
+/// kNmtEvEnterPreOperational). kCopNmtStateError when already connected,
+/// kCopLsssInvalidNodeId while the node has no node-ID (LSS).
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmConnectToNet() -> tCopKernel {
     let r = global::with(|i| i.stack.connect());
@@ -163,6 +170,23 @@ pub extern "C" fn CcmProcess() -> tCopKernel {
         return CopKernel::SrdoNotHandledInApp.code();
     }
     CopKernel::Successful.code()
+}
+
+/// `CcmProcessLssInitState`: one processing cycle (as `CcmProcess`) of a
+/// node started without node-ID (0xFF, LSS slave built in), before
+/// `CcmConnectToNet`: only LSS requests (CiA 305) are answered. Returns
+/// kCopLsssInvalidNodeId while the node has no node-ID; kCopSuccessful once
+/// an LSS master gave it one and switched the LSS state back to waiting
+/// (the node took it with a reset communication, whose NMT events ran in
+/// this call), and for a node that has one from the start;
+/// kCopIllegalInstance before `CcmInitCANopen`.
+#[unsafe(no_mangle)]
+pub extern "C" fn CcmProcessLssInitState() -> tCopKernel {
+    let r = CcmProcess();
+    if r != CopKernel::Successful.code() {
+        return r;
+    }
+    code(global::with(|i| i.stack.lss_init_state()))
 }
 
 /// `CcmReadObject`: copies the value of an object (CPU byte order) into

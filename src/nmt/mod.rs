@@ -1,7 +1,8 @@
 //! Network management: the NMT slave's commands (SYS TEC NMTS), the NMT
 //! master (NMTM) with node guarding of its slaves, the life guarding
-//! slave (LGS), which watches the master's guard requests, and the error
-//! behaviour (0x1029), the state a communication error leads to.
+//! slave (LGS), which watches the master's guard requests, the error
+//! behaviour (0x1029), the state a communication error leads to, and the
+//! LSS slave (LSSS, CiA 305), which lets a master set the node-ID.
 //!
 //! The slave's state machine is driven by the stack ([`crate::ccm`]): it
 //! decodes NMT commands into the transitions of [`slave`] and runs them in
@@ -9,6 +10,7 @@
 
 pub mod error_behaviour;
 pub mod lifeguard;
+pub mod lss;
 pub mod master;
 pub mod slave;
 

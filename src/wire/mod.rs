@@ -2,6 +2,7 @@
 //! back, without state. Byte layouts cite CiA 301 / CiA 304.
 
 pub mod emcy;
+pub mod lss;
 pub mod nmt;
 pub mod pdo;
 pub mod sdo;
