@@ -270,6 +270,16 @@ DWORD PeerProcess (void)
     return (DWORD) CcmProcess();
 }
 
+DWORD PeerProcessLssInitState (void)
+{
+    return (DWORD) CcmProcessLssInitState();
+}
+
+BYTE PeerNodeId (void)
+{
+    return CcmLsssGetNodeId();
+}
+
 DWORD PeerStackVersion (void)
 {
     return CopGetStackVersion();

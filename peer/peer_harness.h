@@ -33,6 +33,8 @@ DWORD PeerInit (BYTE bNodeId_p);
 DWORD PeerConnect (void);                   /* CcmConnectToNet: boot-up */
 DWORD PeerShutdown (void);                  /* CcmShutDownCANopen */
 DWORD PeerProcess (void);                   /* CcmProcess */
+DWORD PeerProcessLssInitState (void);       /* CcmProcessLssInitState */
+BYTE  PeerNodeId (void);                    /* CcmLsssGetNodeId */
 DWORD PeerStackVersion (void);              /* CopGetStackVersion */
 
 /* Store / restore: fOn_p 1 registers the simulated memory of

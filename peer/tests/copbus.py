@@ -88,6 +88,8 @@ class PeerLibrary:
             "PeerConnect": (c.c_uint32, []),
             "PeerShutdown": (c.c_uint32, []),
             "PeerProcess": (c.c_uint32, []),
+            "PeerProcessLssInitState": (c.c_uint32, []),
+            "PeerNodeId": (c.c_uint8, []),
             "PeerStackVersion": (c.c_uint32, []),
             "PeerAdvanceTicks": (None, [c.c_uint32]),
             "PeerTicks": (c.c_uint32, []),
@@ -163,6 +165,14 @@ class PeerLibrary:
             self._collect()
             return ret
 
+    def process_lss_init(self):
+        """One CcmProcessLssInitState at the current time (its return code)."""
+        return self._call("PeerProcessLssInitState")
+
+    def node_id(self):
+        """CcmLsssGetNodeId."""
+        return self._call("PeerNodeId")
+
     def advance_ms(self, ms):
         """Moves the node's clock ms ahead of the wall clock and processes."""
         with self.lock:
@@ -205,6 +215,10 @@ class PeerLibrary:
     def connect(self):
         """CcmConnectToNet: PRE-OPERATIONAL, boot-up message."""
         self._check("PeerConnect")
+
+    def connect_code(self):
+        """CcmConnectToNet's return code (no exception)."""
+        return self._call("PeerConnect")
 
     def shutdown(self):
         with self.lock:
