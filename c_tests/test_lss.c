@@ -9,16 +9,23 @@
  */
 #include "test_util.h"
 
+/* An LSS frame: the specifier, a number in bytes 1..4 (little-endian), the
+ * rest 0. */
+static void LssFrame (BYTE* pbData_p, BYTE bCs_p, DWORD dwValue_p)
+{
+    memset(pbData_p, 0, 8);
+    pbData_p[0] = bCs_p;
+    pbData_p[1] = (BYTE) dwValue_p;
+    pbData_p[2] = (BYTE) (dwValue_p >> 8);
+    pbData_p[3] = (BYTE) (dwValue_p >> 16);
+    pbData_p[4] = (BYTE) (dwValue_p >> 24);
+}
+
 static void Request (BYTE bCs_p, DWORD dwValue_p)
 {
     BYTE abData[8];
 
-    memset(abData, 0, sizeof(abData));
-    abData[0] = bCs_p;
-    abData[1] = (BYTE) dwValue_p;
-    abData[2] = (BYTE) (dwValue_p >> 8);
-    abData[3] = (BYTE) (dwValue_p >> 16);
-    abData[4] = (BYTE) (dwValue_p >> 24);
+    LssFrame(abData, bCs_p, dwValue_p);
     CHECK_EQ(SimInject(0x7E5, 0, 8, abData), 1);
 }
 
@@ -26,12 +33,7 @@ static void ExpectAnswer (const char* pszWhat_p, BYTE bCs_p, DWORD dwValue_p)
 {
     BYTE abData[8];
 
-    memset(abData, 0, sizeof(abData));
-    abData[0] = bCs_p;
-    abData[1] = (BYTE) dwValue_p;
-    abData[2] = (BYTE) (dwValue_p >> 8);
-    abData[3] = (BYTE) (dwValue_p >> 16);
-    abData[4] = (BYTE) (dwValue_p >> 24);
+    LssFrame(abData, bCs_p, dwValue_p);
     TestExpectFrame(pszWhat_p, 0x7E4, 8, abData);
 }
 

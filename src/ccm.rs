@@ -216,7 +216,19 @@ impl Stack {
     /// of application and communication objects with their NMT events. The
     /// node stays in INITIALISATION until [`Stack::connect`].
     pub fn new(od: ObjectDictionary, node_id: u8) -> CopResult<Stack> {
-        if !(1..=127).contains(&node_id) {
+        Stack::create(od, node_id, None)
+    }
+
+    /// [`Stack::new`] with the LSS slave (CiA 305, [`crate::nmt::lss`]):
+    /// `node_id` may also be 0xFF, a node without node-ID, which answers
+    /// only LSS until a master gives it one ([`Stack::lss_init_state`]).
+    pub fn with_lss(od: ObjectDictionary, node_id: u8) -> CopResult<Stack> {
+        Stack::create(od, node_id, Some(LssSlave::new(node_id)))
+    }
+
+    fn create(od: ObjectDictionary, node_id: u8, lss: Option<LssSlave>) -> CopResult<Stack> {
+        let without_node_id = lss.is_some() && node_id == lss::UNCONFIGURED;
+        if !(1..=127).contains(&node_id) && !without_node_id {
             return Err(CopKernel::InvalidNodeId);
         }
         let mut s = Stack {
@@ -242,27 +254,12 @@ impl Stack {
             lgs: LifeGuardSlave::new(),
             syncp: SyncProducer::new(),
             store: StoreRestore::new(),
-            lss: None,
+            lss,
             dynamic: None,
         };
         s.srdo.init(&s.od)?;
         s.queue.emit(Event::Nmt(NmtEvent::EnterInitialising));
         s.queue_reset(true);
-        Ok(s)
-    }
-
-    /// [`Stack::new`] with the LSS slave (CiA 305, [`crate::nmt::lss`]):
-    /// `node_id` may also be 0xFF, a node without node-ID, which answers
-    /// only LSS until a master gives it one ([`Stack::lss_init_state`]).
-    pub fn with_lss(od: ObjectDictionary, node_id: u8) -> CopResult<Stack> {
-        let valid = if node_id == lss::UNCONFIGURED {
-            1
-        } else {
-            node_id
-        };
-        let mut s = Stack::new(od, valid)?;
-        s.node_id = node_id;
-        s.lss = Some(LssSlave::new(node_id));
         Ok(s)
     }
 
