@@ -126,7 +126,8 @@ tCopKernel CcmWriteObject(WORD wIndex_p, BYTE bSubindex_p, const void *pSrcData_
 BYTE CcmObdGetNodeState(void);
 
 /**
- * `CcmLsssGetNodeId`: this node's ID, 0 before initialisation.
+ * `CcmLsssGetNodeId`: this node's ID (0xFF while a node started for LSS
+ * has none, see `CcmProcessLssInitState`), 0 before initialisation.
  */
 BYTE CcmLsssGetNodeId(void);
 

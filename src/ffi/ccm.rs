@@ -269,7 +269,8 @@ pub extern "C" fn CcmObdGetNodeState() -> BYTE {
     global::with(|i| i.stack.nmt_state() as u8).unwrap_or(0)
 }
 
-/// `CcmLsssGetNodeId`: this node's ID, 0 before initialisation.
+/// `CcmLsssGetNodeId`: this node's ID (0xFF while a node started for LSS
+/// has none, see `CcmProcessLssInitState`), 0 before initialisation.
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmLsssGetNodeId() -> BYTE {
     global::with(|i| i.stack.node_id()).unwrap_or(0)
