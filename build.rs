@@ -187,8 +187,9 @@ fn from_features() -> Config {
         // The dynamic OD is part of the Rust build unless switched off.
         obd_use_dynamic_od: env_u32("COP_OBD_USE_DYNAMIC_OD", 1) != 0,
         cob_more_than_128_entries: env_u32("COP_COB_MORE_THAN_128_ENTRIES", 0) != 0,
-        // Not in the SYS TEC default CCM_MODULE_INTEGRATION (copdef.h).
-        ccm_module_lsss: env_u32("COP_CCM_MODULE_LSSS", 0) != 0,
+        // Not in the SYS TEC default CCM_MODULE_INTEGRATION (copdef.h), but
+        // a default feature of the Rust build.
+        ccm_module_lsss: feature("lss-slave") || env_u32("COP_CCM_MODULE_LSSS", 0) != 0,
     }
 }
 
@@ -670,6 +671,7 @@ fn main() {
         ("cdrv_can20b", cfg.cdrv_can20b),
         ("nmts_use_lifeguarding", cfg.nmts_use_lifeguarding),
         ("cob_hdl_word", cfg.cob_more_than_128_entries),
+        ("ccm_module_lsss", cfg.ccm_module_lsss),
     ];
     for (name, on) in flags {
         println!("cargo::rustc-check-cfg=cfg({name})");

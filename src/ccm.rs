@@ -33,12 +33,11 @@ use crate::nmt::slave::{self, Transition};
 use crate::nmt::{LifeGuardSlave, NmtMaster, error_behaviour, lifeguard};
 use crate::od::{ByteOrder, Object, ObjectDictionary, Staged, WriteHooks};
 use crate::pdo::Pdo;
-use crate::port::{CanFrame, CanId, CanPort, Priority, RxFrame, Ticks};
+use crate::port::{CanId, CanPort, Priority, RxFrame, Ticks};
 use crate::sdo::{SdoClient, SdoServers};
 use crate::srdo::{Received, Srdo};
 use crate::store::{self, StoreRestore};
 use crate::sync::{self, SyncProducer};
-use crate::wire;
 use crate::wire::emcy::Emergency;
 use crate::wire::nmt::{self, NmtCs};
 use crate::wire::srdo::{COB_ID_COUNT, COB_ID_MIN, GFC_ID};
@@ -222,6 +221,9 @@ impl Stack {
     /// [`Stack::new`] with the LSS slave (CiA 305, [`crate::nmt::lss`]):
     /// `node_id` may also be 0xFF, a node without node-ID, which answers
     /// only LSS until a master gives it one ([`Stack::lss_init_state`]).
+    /// Only in builds with the LSS slave (`CCM_MODULE_LSSS`, feature
+    /// `lss-slave`): without it no LSS code is in the image.
+    #[cfg(ccm_module_lsss)]
     pub fn with_lss(od: ObjectDictionary, node_id: u8) -> CopResult<Stack> {
         Stack::create(od, node_id, Some(LssSlave::new(node_id)))
     }
@@ -721,7 +723,8 @@ impl Stack {
     #[inline(never)]
     fn on_other_frame(&mut self, port: &mut impl CanPort, rx: &RxFrame, now: Ticks) {
         let f = &rx.frame;
-        if self.lss.is_some() && f.id == CanId::std_masked(wire::lss::MASTER_TO_SLAVE) {
+        #[cfg(ccm_module_lsss)]
+        if self.lss.is_some() && f.id == CanId::std_masked(crate::wire::lss::MASTER_TO_SLAVE) {
             self.on_lss_frame(port, f);
             return;
         }
@@ -766,9 +769,11 @@ impl Stack {
 
     /// An LSS request (CiA 305), in every NMT state and before
     /// `CcmConnectToNet`.
+    #[cfg(ccm_module_lsss)]
     #[inline(never)]
-    fn on_lss_frame(&mut self, port: &mut impl CanPort, f: &CanFrame) {
-        let (Some(lss), Some(req)) = (self.lss.as_mut(), wire::lss::decode_request(f)) else {
+    fn on_lss_frame(&mut self, port: &mut impl CanPort, f: &crate::port::CanFrame) {
+        let (Some(lss), Some(req)) = (self.lss.as_mut(), crate::wire::lss::decode_request(f))
+        else {
             return;
         };
         let address = [1, 2, 3, 4].map(|sub| self.od.read_or(lss::IDENTITY_INDEX, sub, 0u32));
@@ -858,6 +863,7 @@ impl Stack {
                 self.store.load_parts(&self.od, store::part::APP);
             }
             Internal::RestoreCommunication => {
+                #[cfg(ccm_module_lsss)]
                 if let Some(lss) = &self.lss {
                     // CiA 305: the pending node-ID becomes the node's now.
                     self.node_id = lss.pending_node_id();
@@ -960,8 +966,12 @@ impl Stack {
     /// subscribes its own COB-IDs.
     fn subscribe(&mut self, port: &mut impl CanPort) {
         let _ = port.subscribe(CanId::std_masked(nmt::NMT_COB_ID), Priority::High);
+        #[cfg(ccm_module_lsss)]
         if self.lss.is_some() {
-            let _ = port.subscribe(CanId::std_masked(wire::lss::MASTER_TO_SLAVE), Priority::Low);
+            let _ = port.subscribe(
+                CanId::std_masked(crate::wire::lss::MASTER_TO_SLAVE),
+                Priority::Low,
+            );
         }
         // Error control of every other node: guarding requests to this node,
         // heartbeats for the consumer, boot-ups and guard answers for the

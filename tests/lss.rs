@@ -7,6 +7,8 @@
 //! configure node-ID, 0x5A..0x5E inquire, 0x4C identify non-configured with
 //! answer 0x50), numbers little-endian from byte 1.
 
+#![cfg(feature = "lss-slave")]
+
 use cop::ccm::{NmtCommand, Stack};
 use cop::error::CopKernel;
 use cop::event::{Event, NmtEvent, NmtState};

@@ -111,11 +111,10 @@ fn init(p: &tCcmInitParam) -> CopResult {
         m_TxBuffLow: ram.m_TxBuffLow,
         m_fpEnableInterrupt: p.m_fpCanInterruptEnable,
     };
-    let stack = if crate::config::CCM_MODULE_LSSS {
-        Stack::with_lss(od, p.m_bInitNodeId)?
-    } else {
-        Stack::new(od, p.m_bInitNodeId)?
-    };
+    #[cfg(ccm_module_lsss)]
+    let stack = Stack::with_lss(od, p.m_bInitNodeId)?;
+    #[cfg(not(ccm_module_lsss))]
+    let stack = Stack::new(od, p.m_bInitNodeId)?;
     driver::init(&mut cdrv)?;
     global::install(Instance {
         stack,
