@@ -40,6 +40,13 @@ _Static_assert(sizeof(tCopKernel) == 4, "tCopKernel enum (int-sized on this comp
 #endif
 _Static_assert(sizeof(tObdSize) == EXPECT_OBD_SIZE, "tObdSize follows OBD_SUPPORTED_OBJ_SIZE");
 
+/* LSS (SYSTEC_API_MORE.md section 3: tLssCbParam on ARM 0/4/5/6, sizeof 8). */
+_Static_assert(sizeof(tLssAddress) == 16, "tLssAddress: four DWORDs");
+_Static_assert(offsetof(tLssCbParam, m_bNodeId) == 4, "tLssCbParam.m_bNodeId");
+_Static_assert(offsetof(tLssCbParam, m_bBtrTableSelector) == 5, "tLssCbParam.m_bBtrTableSelector");
+_Static_assert(offsetof(tLssCbParam, m_bBtrIndex) == 6, "tLssCbParam.m_bBtrIndex");
+_Static_assert(sizeof(tLssCbParam) == 8, "tLssCbParam");
+
 /* tCdrvMsg: WORD id (CAN20A) at 0, type 2, DLC 3, channel 4, data 5..12;
  * with CDRV_TIMESTAMP the DWORD time at 16 (size 20), else size 14. */
 #if (CDRV_CAN_SPEC == CAN20B)

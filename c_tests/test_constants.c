@@ -455,6 +455,26 @@ EXPECT(COP_GET_RELEASE_VERSION(0x00013C05UL), 1);
 EXPECT(PDO_INVALID_INDEX, 0x0FFFF);
 EXPECT(CDRV_SELECT_CHANNEL(3), 0x0008);
 
+/* LSS (SYSTEC_API_MORE.md section 3: lsss.h, lss.h). */
+EXPECT(LSS_INVALID_NODEID, 0xFF);
+EXPECT(kLssModeOperation, 0);
+EXPECT(kLssModeConfiguration, 1);
+EXPECT(kLssModeSelective, 2);
+EXPECT(kLsssEvEnterConfiguration, 0x00);
+EXPECT(kLsssEvConfigureNodeId, 0x01);
+EXPECT(kLsssEvConfigureBitTiming, 0x02);
+EXPECT(kLsssEvActivateBitTiming, 0x03);
+EXPECT(kLsssEvSaveConfiguration, 0x04);
+EXPECT(kLsssEvDeactivateBusContact, 0x05);
+EXPECT(kLsssEvActivateBusContact, 0x06);
+EXPECT(kLsssEvEnterOperation, 0x10);
+EXPECT(kLsssEvPreResetNode, 0x11);
+EXPECT(kLssSwitchModeGlobal, 4);
+EXPECT(kLssConfigureNodeId, 17);
+EXPECT(kLssConfigureBitTiming, 19);
+EXPECT(kLssActivateBitTiming, 21);
+EXPECT(kLssStoreConfiguration, 23);
+
 /* The string form of the version (0x100A) and the run-time version word. */
 int main (void)
 {
@@ -464,6 +484,6 @@ int main (void)
     CHECK_EQ(COP_GET_MAJOR_VERSION(CopGetStackVersion()), COP_LIB_VERSION_MAJOR);
     CHECK_EQ(COP_GET_MINOR_VERSION(CopGetStackVersion()), COP_LIB_VERSION_MINOR);
     CHECK_EQ(COP_GET_RELEASE_VERSION(CopGetStackVersion()), COP_LIB_VERSION_RELEASE);
-    printf("%u constants checked at compile time\n", (unsigned) 440);
+    printf("%u constants checked at compile time\n", (unsigned) 458);
     return TEST_DONE("test_constants");
 }

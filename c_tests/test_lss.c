@@ -47,8 +47,8 @@ int main (void)
 
     SimReset();
     TestNmtClear();
-    CHECK_RET(TestInitNode(0, 0xFF, ObdInitRamMin, TestNmtRecorder), kCopSuccessful);
-    CHECK_EQ(CcmLsssGetNodeId(), 0xFF);
+    CHECK_RET(TestInitNode(0, LSS_INVALID_NODEID, ObdInitRamMin, TestNmtRecorder), kCopSuccessful);
+    CHECK_EQ(CcmLsssGetNodeId(), LSS_INVALID_NODEID);
     CHECK_RET(CcmProcessLssInitState(), kCopLsssInvalidNodeId);
     CHECK_RET(CcmConnectToNet(), kCopLsssInvalidNodeId);
     TestDrainSent();

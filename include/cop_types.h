@@ -1145,6 +1145,55 @@ typedef struct
     BYTE m_bSlaveNodeState;     /* NMT state the slave reported (kNodeState*) */
 } tNmtmSlaveInfo;
 
+/* LSS (CiA 305; lsss.h, lss.h). m_bInitNodeId = LSS_INVALID_NODEID starts a
+ * node without node-ID where CCM_MODULE_INTEGRATION has CCM_MODULE_LSSS:
+ * CcmProcessLssInitState then runs until an LSS master has given it one. */
+#define LSS_INVALID_NODEID 0xFF
+
+typedef BYTE tLssMode;
+#define kLssModeOperation     0x00  /* LSS waiting state */
+#define kLssModeConfiguration 0x01
+#define kLssModeSelective     0x02
+
+/* The LSS address: object 0x1018 sub 1..4. */
+typedef struct
+{
+    DWORD m_dwVendorId;
+    DWORD m_dwProductCode;
+    DWORD m_dwRevisionNr;
+    DWORD m_dwSerialNr;
+} tLssAddress;
+
+/* Events of the LSS slave module (its callback parameter below). */
+typedef tFastByte tLssEvent;
+#define kLsssEvEnterConfiguration  0x00
+#define kLsssEvConfigureNodeId     0x01
+#define kLsssEvConfigureBitTiming  0x02
+#define kLsssEvActivateBitTiming   0x03
+#define kLsssEvSaveConfiguration   0x04
+#define kLsssEvDeactivateBusContact 0x05
+#define kLsssEvActivateBusContact  0x06
+#define kLsssEvEnterOperation      0x10
+#define kLsssEvPreResetNode        0x11
+
+typedef struct
+{
+    tLssEvent m_bLssEvent;
+    BYTE      m_bNodeId;
+    BYTE      m_bBtrTableSelector;
+    BYTE      m_bBtrIndex;
+} tLssCbParam;
+
+typedef tCopKernel (PUBLIC ROM* tLssEventCallback) (CCM_DECL_INSTANCE_HDL_ tLssCbParam MEM* pLssCbParam_p);
+
+/* LSS command specifiers (CiA 305; lss.h tLssCommand). */
+typedef BYTE tLssCommand;
+#define kLssSwitchModeGlobal   4
+#define kLssConfigureNodeId    17
+#define kLssConfigureBitTiming 19
+#define kLssActivateBitTiming  21
+#define kLssStoreConfiguration 23
+
 /* ======================================================================== */
 /* 3. SRDO / GFC                                                             */
 /* ======================================================================== */
