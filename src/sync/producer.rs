@@ -48,8 +48,10 @@
 
 use crate::error::{CopKernel, OdError, SdoAbort};
 use crate::od::{Object, ObjectDictionary, Staged};
-use crate::port::{CanFrame, CanId, CanPort, Priority, Ticks};
-use crate::wire::pdo::{COB_INVALID, COB_NO_RTR, SYNC_DEFAULT_COB_ID, check_identifier};
+use crate::port::{CanId, CanPort, Priority, Ticks};
+use crate::wire::pdo::{
+    COB_INVALID, COB_NO_RTR, SYNC_DEFAULT_COB_ID, check_identifier, encode_sync,
+};
 
 /// COB-ID SYNC.
 pub const COB_ID_SYNC_INDEX: u16 = 0x1005;
@@ -81,7 +83,7 @@ pub const fn cycle_ticks(cycle_us: u32) -> u32 {
 pub const fn counter_overflow(value: u64) -> Option<u8> {
     match value {
         0 => Some(0),
-        2..=240 => Some(value as u8),
+        v if v >= 2 && v <= COUNTER_OVERFLOW_MAX as u64 => Some(v as u8),
         _ => None,
     }
 }
@@ -230,17 +232,15 @@ impl SyncProducer {
         if !operating || self.next.is_after(now) {
             return false;
         }
-        let frame = if self.overflow == 0 {
-            CanFrame::new(id, &[])
-        } else {
+        let counter = (self.overflow != 0).then(|| {
             self.counter = if self.counter >= self.overflow {
                 1
             } else {
                 self.counter + 1
             };
-            CanFrame::new(id, &[self.counter])
-        };
-        let sent = port.send(&frame, Priority::High).is_ok();
+            self.counter
+        });
+        let sent = port.send(&encode_sync(id, counter), Priority::High).is_ok();
         let next = self.next.plus(self.period);
         self.next = if now.reached(next) {
             now.plus(self.period)

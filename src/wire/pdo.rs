@@ -240,7 +240,7 @@ pub struct Sync {
     pub counter: Option<u8>,
 }
 
-/// Encodes a SYNC frame (producer side, tests).
+/// Encodes a SYNC frame (the SYNC producer; tests).
 pub fn encode_sync(id: CanId, counter: Option<u8>) -> CanFrame {
     match counter {
         Some(c) => CanFrame::new(id, &[c]),
