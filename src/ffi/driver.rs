@@ -77,6 +77,25 @@ fn to_msg(frame: &CanFrame, kind: u8) -> tCdrvMsg {
     m
 }
 
+/// Which losses the overrun bits of `CdrvGetStatus` report: (a frame that
+/// can have been an SRDO or GFC frame, only other frames). SRDO and GFC
+/// identifiers are defined with `kCdrvMsgHigh`, so with
+/// `CDRV_USE_HIGHBUFF` an overrun of the low buffer loses other frames
+/// only; the controller's own overrun (`kCdrvOverrun`) and, without a high
+/// buffer, the low buffer's overrun may have lost one of them.
+fn split_overrun(lost: u16) -> (bool, bool) {
+    let safety_bits = if crate::config::CDRV_USE_HIGHBUFF {
+        cdrv_status::OVERRUN | cdrv_status::RX_BUFF_HIGH_OVERRUN
+    } else {
+        cdrv_status::OVERRUN | cdrv_status::RX_BUFF_HIGH_OVERRUN | cdrv_status::RX_BUFF_LOW_OVERRUN
+    };
+    let safety = lost & safety_bits != 0;
+    (
+        safety,
+        !safety && lost & cdrv_status::RX_BUFF_LOW_OVERRUN != 0,
+    )
+}
+
 /// The stack's port onto the application's driver.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct CdrvPort;
@@ -158,8 +177,10 @@ impl CanPort for CdrvPort {
             // SAFETY: plain call; clears the bits we consumed.
             unsafe { CdrvResetStatus(lost) };
         }
+        let (safety, other) = split_overrun(lost);
         PortStatus {
-            rx_overrun: lost != 0,
+            rx_overrun: safety,
+            rx_overrun_other: other,
             bus_off: status & cdrv_status::BUS_OFF != 0,
         }
     }
@@ -194,5 +215,33 @@ impl Clock for TgtClock {
     fn now(&self) -> Ticks {
         // SAFETY: plain call into the application's target code.
         Ticks(unsafe { TgtGetTickCount() })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Only a loss that can have hit an SRDO or GFC frame is one for the
+    /// SRDO module (SAFETY_BEHAVIOUR.md section 5); a low-buffer overrun
+    /// with a high buffer is a CAN overrun of the other communication.
+    #[test]
+    fn low_buffer_overrun_is_no_safety_loss_with_a_high_buffer() {
+        use cdrv_status::*;
+        assert_eq!(split_overrun(0), (false, false));
+        assert_eq!(split_overrun(OVERRUN), (true, false));
+        assert_eq!(split_overrun(RX_BUFF_HIGH_OVERRUN), (true, false));
+        assert_eq!(
+            split_overrun(RX_BUFF_LOW_OVERRUN),
+            (
+                !crate::config::CDRV_USE_HIGHBUFF,
+                crate::config::CDRV_USE_HIGHBUFF
+            )
+        );
+        assert_eq!(
+            split_overrun(RX_BUFF_LOW_OVERRUN | RX_BUFF_HIGH_OVERRUN),
+            (true, false)
+        );
+        assert_eq!(split_overrun(BUS_OFF), (false, false));
     }
 }
