@@ -3,7 +3,8 @@
  * simulated driver, this main). CTest links it against a library built with
  * a different configuration and expects the link to fail on the missing
  * configuration signature (test_abi_mismatch_fails_to_link), and against
- * the matching library, where it links (test_abi_match_links).
+ * the matching library, where it links (test_abi_match_links); in both
+ * instance forms (test_abi_instances_*).
  */
 #include <string.h>
 
@@ -23,5 +24,12 @@ int main (void)
     InitParam.m_bInitNodeId = 1;
     InitParam.m_fpObdInitRam = ObdInitRamMin;
     SimReset();
+#if (COP_MAX_INSTANCES > 1)
+    {
+        tCopInstanceHdl Handle;
+        return (CcmInitCANopen(&Handle, &InitParam, kCcmFirstInstance) == kCopSuccessful) ? 0 : 1;
+    }
+#else
     return (CcmInitCANopen(&InitParam, kCcmFirstInstance) == kCopSuccessful) ? 0 : 1;
+#endif
 }

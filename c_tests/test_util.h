@@ -14,29 +14,7 @@
 
 #include "cdrv_sim.h"
 
-#define TEST_SKIP 77
-
-extern int iTestFailures_g;
-
-#define CHECK(cond) \
-    do { if (!(cond)) { printf("%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); iTestFailures_g++; } } while (0)
-
-#define CHECK_EQ(actual, expected) \
-    do { unsigned long long a_ = (unsigned long long) (actual), e_ = (unsigned long long) (expected); \
-         if (a_ != e_) { printf("%s:%d: CHECK_EQ failed: %s = 0x%llX, expected %s = 0x%llX\n", \
-                                __FILE__, __LINE__, #actual, a_, #expected, e_); iTestFailures_g++; } } while (0)
-
-/* Return code check with the names of both codes in the message. */
-#define CHECK_RET(expr, expected) \
-    do { tCopKernel r_ = (tCopKernel) (expr); \
-         if (r_ != (tCopKernel) (expected)) { printf("%s:%d: %s returned 0x%04X (%s), expected 0x%04X (%s)\n", \
-             __FILE__, __LINE__, #expr, (unsigned) r_, TestKernelName(r_), (unsigned) (expected), \
-             TestKernelName((tCopKernel) (expected))); iTestFailures_g++; } } while (0)
-
-#define TEST_DONE(name) TestDone(name)
-
-int         TestDone (const char* pszName_p);
-const char* TestKernelName (tCopKernel Ret_p);
+#include "test_check.h"
 
 /* NMT callback that records every event (and prints it when verbose). */
 #define TEST_MAX_EVENTS 64

@@ -291,7 +291,7 @@ tCopKernel DynGetLastError(CCM_DECL_INSTANCE_HDL_
  */
 tCopKernel DynDestroyOd(CCM_DECL_INSTANCE_HDL);
 
-#if defined(COP_HOST_SIMULATION)
+#if (defined(COP_HOST_SIMULATION) && !defined(COP_CFG_MULTI_INSTANCE))
 /**
  * `CopSimSelectInstance`: simulation only (`sim-instances` builds, and so
  * every `std` build) — selects

@@ -362,6 +362,9 @@ typedef enum
 #if (CDRV_CAN_SPEC == CAN20B)
 #define COP_CFG_CDRV_CAN20B 1
 #endif
+#if (COP_MAX_INSTANCES > 1)
+#define COP_CFG_MULTI_INSTANCE 1
+#endif
 #if (NMTS_USE_LIFEGUARDING != FALSE)
 #define COP_CFG_NMTS_USE_LIFEGUARDING 1
 #endif

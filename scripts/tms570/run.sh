@@ -162,7 +162,7 @@ run_programs() {
         fi
         # shellcheck disable=SC2086 # the list of sources
         EXTRA_CFLAGS="${dflags[*]}" program "$OUT/$name.elf" "$lib" "$cfg" \
-            $(for f in $srcs test_util.c; do echo "c_tests/$f"; done)
+            $(for f in $srcs test_util.c test_check.c; do echo "c_tests/$f"; done)
         qemu-armeb "$OUT/$name.elf" >"$OUT/$name.log" 2>&1 || rc=$?
         if [ $rc -eq 0 ]; then
             echo "ok   $name ($cfg; $(tail -1 "$OUT/$name.log"))"

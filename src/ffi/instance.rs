@@ -95,11 +95,12 @@ impl Refusal for tCopKernel {
     }
 }
 
-/// `CcmObdGetNodeState`, `CcmLsssGetNodeId`: 0xFF, no node state or node-ID.
+/// `CcmObdGetNodeState`, `CcmLsssGetNodeId`: 0, as before
+/// `CcmInitCANopen` (no instance, no node state, no node-ID).
 impl Refusal for BYTE {
     #[inline(always)]
     fn refusal(_: CopKernel) -> Self {
-        0xFF
+        0
     }
 }
 
@@ -373,6 +374,6 @@ mod tests {
             <tCopKernel as Refusal>::refusal(CopKernel::IllegalInstance),
             CopKernel::IllegalInstance.code()
         );
-        assert_eq!(<BYTE as Refusal>::refusal(CopKernel::IllegalInstance), 0xFF);
+        assert_eq!(<BYTE as Refusal>::refusal(CopKernel::IllegalInstance), 0);
     }
 }
