@@ -137,6 +137,11 @@ static void InitRefusals (void)
     memset(&Init, 0, sizeof(Init));
     Init.m_bInitNodeId = NODE_ID;
     CHECK_RET(CcmInitCANopen(&Init, kCcmFirstInstance), kCopInvalidParam);      /* no m_fpObdInitRam */
+    /* a tCcmInitCall that is none of the four (cop_types.h) */
+    Init.m_fpObdInitRam = ObdInitRam;
+    CHECK_RET(CcmInitCANopen(&Init, 7), kCopInvalidParam);
+    CHECK_RET(CcmInitCANopen(&Init, 4), kCopInvalidParam);
+    Init.m_fpObdInitRam = NULL;
     CHECK_RET(TestInitNode(0, 0, ObdInitRam, NULL), kCopInvalidNodeId);
     CHECK_RET(TestInitNode(0, 128, ObdInitRam, NULL), kCopInvalidNodeId);
     CHECK_RET(TestInitNode(0, NODE_ID, FailingObdInitRam, NULL), kCopInvalidParam);

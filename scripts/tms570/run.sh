@@ -139,6 +139,38 @@ run_programs() {
         echo "FAIL safety_demo"; cat "$OUT/safety_demo.log"; fail=$((fail + 1))
     fi
 
+    # The two-channel example: four instances (COP_MAX_INSTANCES 4, the
+    # multi-instance ABI), two buses; output and both channels' traces as
+    # on the host.
+    local t=examples_c/two_channel lib_two
+    lib_two=$(archive $t two sim-instances)
+    if align "$lib_two"; then pass=$((pass + 1)); else fail=$((fail + 1)); fi
+    program "$OUT/two_channel.elf" "$lib_two" $t \
+        $t/main.c $t/sensor_ch_a.c $t/sensor_ch_b.c $t/actuator_ch_a.c $t/actuator_ch_b.c
+    if python3 cmake/expect_output.py --expect $t/expected.txt -- qemu-armeb "$OUT/two_channel.elf" >"$OUT/two_channel.log" 2>&1 &&
+        python3 cmake/expect_output.py --extract "^  can0 " --compare $t/expected_trace_can0.txt -- \
+            qemu-armeb "$OUT/two_channel.elf" >>"$OUT/two_channel.log" 2>&1 &&
+        python3 cmake/expect_output.py --extract "^  can1 " --compare $t/expected_trace_can1.txt -- \
+            qemu-armeb "$OUT/two_channel.elf" >>"$OUT/two_channel.log" 2>&1; then
+        echo "ok   two_channel (four instances; output as expected.txt; $(cat $t/expected_trace_can0.txt $t/expected_trace_can1.txt | wc -l) frames on can0/can1 equal the committed traces)"
+        pass=$((pass + 1))
+    else
+        echo "FAIL two_channel"; cat "$OUT/two_channel.log"; fail=$((fail + 1))
+    fi
+
+    # The two-instance C test (c_tests/cfg_multi, COP_MAX_INSTANCES 2).
+    local lib_multi rc_multi=0
+    lib_multi=$(archive c_tests/cfg_multi multi sim-instances)
+    program "$OUT/test_multi.elf" "$lib_multi" c_tests/cfg_multi \
+        c_tests/test_multi.c c_tests/test_check.c c_tests/objdict_all.c c_tests/objdict_srdo_peer.c
+    qemu-armeb "$OUT/test_multi.elf" >"$OUT/test_multi.log" 2>&1 || rc_multi=$?
+    if [ $rc_multi -eq 0 ]; then
+        echo "ok   test_multi (c_tests/cfg_multi; $(tail -1 "$OUT/test_multi.log"))"
+        pass=$((pass + 1))
+    else
+        echo "FAIL test_multi (exit $rc_multi)"; tail -20 "$OUT/test_multi.log"; fail=$((fail + 1))
+    fi
+
     # The C tests of c_tests/cfg (the main test configuration) and
     # c_tests/cfg_manual (the safety manual's application code, static SRDO
     # mapping), with sources and defines as c_tests/CMakeLists.txt builds
