@@ -548,6 +548,15 @@ static void Handles (void)
     CHECK_RET(CcmProcess(hA_g), kCopSuccessful);
     CHECK_RET(CcmReadObject(hA_g, 0x2040, 1, &b, &Size), kCopSuccessful);
 
+    /* an instance on the dictionary tables of another (the same
+     * ObdInitRam): refused, they would share every value */
+    SimSelectNode(SIM_B);
+    hB_g = 0x77;
+    CHECK_RET(CcmInitCANopen(&hB_g, InitParam(SIM_B, ID_B, ObdInitRam), kCcmAdditionalInstance),
+              kCopInvalidParam);
+    CHECK_EQ(hB_g, CCM_ILLINSTANCE_HDL);
+    CHECK_EQ(SimRxCapacity(SIM_B, 1), 0);                   /* no driver started */
+
     /* the slot is free again: the next instance takes handle 1 */
     SimSelectNode(SIM_B);
     hB_g = CCM_ILLINSTANCE_HDL;

@@ -37,8 +37,11 @@ DWORD CopGetStackVersion(void);
  * kNmtEvPostResetCommunication) through the NMT callback. The node stays
  * in INITIALISATION until `CcmConnectToNet`.
  *
- * Returns kCopSuccessful; kCopInvalidParam (NULL parameter or no
- * `m_fpObdInitRam`); kCopWrongSignature (objdef.h built with another
+ * Returns kCopSuccessful; kCopInvalidParam (NULL parameter, no
+ * `m_fpObdInitRam`, a `tCcmInitCall` other than the four of cop_types.h,
+ * or dictionary tables another instance uses: each instance needs its own
+ * objdict.h tables, `OBD_INIT_RAM_NAME`); with several instances
+ * kCopInvalidInstanceParam (NULL handle pointer); kCopWrongSignature (objdef.h built with another
  * configuration than the library); kCopObdIllegalPart /
  * kCopObdUnknownObjectType (a dictionary table is unsorted or malformed);
  * kCopInvalidNodeId (node-ID not 1..127, or 0xFF where the build has the
@@ -47,8 +50,16 @@ DWORD CopGetStackVersion(void);
  * initialised); the driver's code from `CdrvInit`; an SRDO configuration
  * code from the SRDO module.
  *
+ * With several instances (`COP_MAX_INSTANCES` > 1) the new instance takes
+ * the lowest free handle, written to `*pInstanceHandle` before the
+ * start-up NMT events reach the callback (`CCM_ILLINSTANCE_HDL` on a
+ * failure); `kCcmFirstInstance` / `kCcmAddCcmInstFirstCdrvInst` start the
+ * driver with `CdrvInit`, `kCcmAdditionalInstance` /
+ * `kCcmAddCcmInstAddCdrvInst` with `CdrvAddInstance`.
+ *
  * # Safety
- * `pInitParam_p` must be NULL or point to a valid `tCcmInitParam`.
+ * `pInitParam_p` must be NULL or point to a valid `tCcmInitParam`;
+ * `pInstanceHandle` NULL or writable.
  */
 tCopKernel CcmInitCANopen(CCM_DECL_PTR_INSTANCE_HDL_
                           tCcmInitParam *pInitParam_p,

@@ -39,8 +39,11 @@ pub extern "C" fn CopGetStackVersion() -> DWORD {
 /// kNmtEvPostResetCommunication) through the NMT callback. The node stays
 /// in INITIALISATION until `CcmConnectToNet`.
 ///
-/// Returns kCopSuccessful; kCopInvalidParam (NULL parameter or no
-/// `m_fpObdInitRam`); kCopWrongSignature (objdef.h built with another
+/// Returns kCopSuccessful; kCopInvalidParam (NULL parameter, no
+/// `m_fpObdInitRam`, a `tCcmInitCall` other than the four of cop_types.h,
+/// or dictionary tables another instance uses: each instance needs its own
+/// objdict.h tables, `OBD_INIT_RAM_NAME`); with several instances
+/// kCopInvalidInstanceParam (NULL handle pointer); kCopWrongSignature (objdef.h built with another
 /// configuration than the library); kCopObdIllegalPart /
 /// kCopObdUnknownObjectType (a dictionary table is unsorted or malformed);
 /// kCopInvalidNodeId (node-ID not 1..127, or 0xFF where the build has the
@@ -49,8 +52,16 @@ pub extern "C" fn CopGetStackVersion() -> DWORD {
 /// initialised); the driver's code from `CdrvInit`; an SRDO configuration
 /// code from the SRDO module.
 ///
+/// With several instances (`COP_MAX_INSTANCES` > 1) the new instance takes
+/// the lowest free handle, written to `*pInstanceHandle` before the
+/// start-up NMT events reach the callback (`CCM_ILLINSTANCE_HDL` on a
+/// failure); `kCcmFirstInstance` / `kCcmAddCcmInstFirstCdrvInst` start the
+/// driver with `CdrvInit`, `kCcmAdditionalInstance` /
+/// `kCcmAddCcmInstAddCdrvInst` with `CdrvAddInstance`.
+///
 /// # Safety
-/// `pInitParam_p` must be NULL or point to a valid `tCcmInitParam`.
+/// `pInitParam_p` must be NULL or point to a valid `tCcmInitParam`;
+/// `pInstanceHandle` NULL or writable.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmInitCANopen(
     #[cfg(multi_instance)] pInstanceHandle: *mut tCopInstanceHdl,
@@ -99,6 +110,13 @@ fn init(p: &tCcmInitParam, first: bool) -> CopResult {
             ptr::c_table(ram.m_pUserPart),
         )
     };
+    // Each instance its own objdict.h tables (OBD_INIT_RAM_NAME): two on
+    // one set would share every value and attached variable.
+    if let Some(first) = [generic, man, dev].into_iter().find(|t| !t.is_empty()) {
+        if global::dictionary_in_use(first) {
+            return Err(CopKernel::InvalidParam);
+        }
+    }
     let mut od = ObjectDictionary::new(generic, man, dev).map_err(|e| e.code)?;
     od.set_user_part(usr).map_err(|e| e.code)?;
     od.set_callback_handle(instance::callback_handle());

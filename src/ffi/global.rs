@@ -311,6 +311,40 @@ pub fn install(i: Instance) -> Result<(), CopKernel> {
     r
 }
 
+/// Whether a live instance other than the addressed one has a dictionary
+/// whose first non-empty table is `table` (the same objdict.h tables:
+/// two instances on one set of statics would share every value and every
+/// attached variable). `false` for an empty table and for a nested call.
+pub fn dictionary_in_use(table: &[crate::od::ObdEntry]) -> bool {
+    if table.is_empty() || GLOBAL.busy.replace(true) {
+        return false;
+    }
+    let own = GLOBAL.current.get();
+    let live = GLOBAL.live.get();
+    // SAFETY: `busy` is held, so no other reference into the cell exists
+    // until it is cleared below; only slots whose `live` bit is set are
+    // read, and `install` initialised those.
+    let all = unsafe { &*GLOBAL.instances.get() };
+    let used = all.iter().enumerate().any(|(i, slot)| {
+        i != own
+            && (live >> i) & 1 != 0
+            // SAFETY: the slot's `live` bit is set (above).
+            && core::ptr::eq(first_table(unsafe { slot.assume_init_ref() }), table.as_ptr())
+    });
+    GLOBAL.busy.set(false);
+    used
+}
+
+/// The first entry of an instance's first non-empty dictionary table.
+fn first_table(i: &Instance) -> *const crate::od::ObdEntry {
+    use crate::od::Part;
+    [Part::Generic, Part::Manufacturer, Part::Device]
+        .into_iter()
+        .map(|p| i.stack.od().part(p))
+        .find(|t| !t.is_empty())
+        .map_or(core::ptr::null(), |t| t.as_ptr())
+}
+
 /// Removes the instance.
 pub fn remove() -> Result<Instance, CopKernel> {
     if GLOBAL.busy.replace(true) {
