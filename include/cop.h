@@ -174,7 +174,8 @@ tCopKernel CcmSendEmergency(const tEmcParam *pEmcpParam_p);
 
 /**
  * `CcmDefineVarTab`: attaches application variables to USERDEF / DOMAIN
- * objects (their `tObdVarEntry`). kCopInvalidParam for NULL,
+ * objects (their `tObdVarEntry`). kCopInvalidParam for NULL (the table,
+ * or an `m_pData` of NULL with kVarValidData: then no entry is taken),
  * kCopObdIndexNotExist / kCopObdSubindexNotExist, kCopObdVarEntryNotExist
  * when the object is not a USERDEF/DOMAIN object, kCopObdValueLengthError
  * when the size does not fit the object's type. Entries before a failing
