@@ -127,6 +127,46 @@ fn refused_writes_change_nothing() {
     assert_eq!(net.p.read(0x1301, 5), 0x103);
 }
 
+/// SAFETY_BEHAVIOUR.md section 2 and manual 1.1.1 restrict *changes* of
+/// the COB-IDs and the mapping to direction 0: a write of the value in
+/// force is no change and is accepted, and 0x13FE still drops to 0 as for
+/// every safety write.
+// req: SB-2-IDENTICAL
+#[test]
+fn a_write_of_the_value_in_force_is_accepted_while_active() {
+    let mut net = Net::preoperational();
+    assert_eq!(net.p.read(0x1301, 1), 1, "SRDO 1 transmits");
+    let same: Vec<Write> = [(0x1301u16, 5u8, 4usize), (0x1301, 6, 4)]
+        .into_iter()
+        .chain(if cfg!(feature = "srdo-static-mapping") {
+            vec![]
+        } else {
+            vec![(0x1381, 0, 1), (0x1381, 1, 4), (0x1381, 4, 4)]
+        })
+        .map(|(index, sub, len)| (index, sub, net.p.read(index, sub), len))
+        .collect();
+    for (index, sub, v, len) in same {
+        assert_eq!(
+            net.p.write(index, sub, v, len),
+            Ok(()),
+            "{index:#x} sub {sub} = {v:#x} again"
+        );
+        assert_eq!(net.p.read(index, sub), v);
+        assert_eq!(net.p.read(0x13FE, 0), 0, "{index:#x} sub {sub}");
+        reseal(&mut net.p).unwrap();
+    }
+    // Another value is still a change and still refused.
+    let cob1 = net.p.read(0x1301, 5);
+    assert_eq!(
+        net.p.write(0x1301, 5, cob1 + 2, 4),
+        refused(CopKernel::SrdoInvalidCfg, 0x0609_0030)
+    );
+    assert_eq!(net.p.read(0x13FE, 0), 0xA5);
+    // The configuration sealed after the identical writes runs (`start`
+    // checks that both nodes' SRDOs run).
+    net.start();
+}
+
 // req: SB-1-TTYPE
 #[test]
 fn transmission_type_is_constant_254() {

@@ -8,10 +8,10 @@
 //! | 0x1301+n sub 1 | direction > 2 | `kCopObdValueToHigh` | 0x06090030 |
 //! | sub 2 / sub 3 | 0 while direction ≠ 0 | `kCopSrdoCfgTimingError` | 0x06090030 |
 //! | sub 4 | not 254 | `kCopSrdoInvalidCfg` | 0x06090030 |
-//! | sub 5 / sub 6 | direction ≠ 0 | `kCopSrdoInvalidCfg` | 0x06090030 |
+//! | sub 5 / sub 6 | direction ≠ 0 and another value than the one in force | `kCopSrdoInvalidCfg` | 0x06090030 |
 //! | sub 5 | not odd in 0x101..=0x17F (bits 31..11 zero) | `kCopSrdoCfgIdError` | 0x06090030 |
 //! | sub 6 | not even in 0x102..=0x180 (bits 31..11 zero) | `kCopSrdoCfgIdError` | 0x06090030 |
-//! | 0x1381+n any sub | direction ≠ 0 | `kCopSrdoInvalidCfg` | 0x06090030 |
+//! | 0x1381+n any sub | direction ≠ 0 and another value than the one in force | `kCopSrdoInvalidCfg` | 0x06090030 |
 //! | 0x1381+n sub 0 | above `SRDO_MAX_MAPPENTRIES` or the entries present | `kCopSrdoErrorMapp` | 0x06090030 |
 //! | 0x13FE = 0xA5 | the configuration check fails | the check's code | 0x08000020 |
 //!
@@ -76,6 +76,9 @@ impl Srdo {
             return Err(OdError::new(CopKernel::SrdoNmtError, SdoAbort::DeviceState));
         }
         let v = value.as_u64().unwrap_or(0);
+        // Manual 1.1.1 restricts changes: the value in force written again
+        // changes nothing and passes the direction rules.
+        let same = od.read_uint(obj.index(), obj.sub()) == Ok(v);
         match target {
             Target::Gfc => {
                 if v > 1 {
@@ -89,10 +92,14 @@ impl Srdo {
                 }
             }
             Target::Crc => {}
-            Target::Commu(commu_index) => check_commu(od, commu_index, obj.sub(), v)?,
+            Target::Commu(commu_index) => check_commu(od, commu_index, obj.sub(), v, same)?,
             Target::Mapp(commu_index) => {
                 if direction(od, commu_index) != Some(Direction::Off as u8) {
-                    return Err(range(CopKernel::SrdoInvalidCfg));
+                    return if same {
+                        Ok(())
+                    } else {
+                        Err(range(CopKernel::SrdoInvalidCfg))
+                    };
                 }
                 if obj.sub() == 0 {
                     let present = od
@@ -133,12 +140,19 @@ fn direction(od: &ObjectDictionary, commu_index: u16) -> Option<u8> {
     read_u8(od, commu_index, 1)
 }
 
-fn check_commu(od: &ObjectDictionary, commu_index: u16, sub: u8, v: u64) -> Result<(), OdError> {
+fn check_commu(
+    od: &ObjectDictionary,
+    commu_index: u16,
+    sub: u8,
+    v: u64,
+    same: bool,
+) -> Result<(), OdError> {
     let off = direction(od, commu_index) == Some(Direction::Off as u8);
     match sub {
         1 if v > 2 => Err(range(CopKernel::ObdValueToHigh)),
         2 | 3 if v == 0 && !off => Err(range(CopKernel::SrdoCfgTimingError)),
         4 if v != u64::from(TRANSMISSION_TYPE) => Err(range(CopKernel::SrdoInvalidCfg)),
+        5 | 6 if !off && same => Ok(()),
         5 | 6 if !off => Err(range(CopKernel::SrdoInvalidCfg)),
         5 | 6 => {
             let id = v as u32;
