@@ -317,6 +317,21 @@ static void Heartbeat (void)
     /* the slave goes silent for more than 50 ms */
     Run(80, 0);
     CHECK(SawHbc(ID_S, kNmtErrCtrlEvHbcConnectionLost));
+    /* from the loss on the node is "disconnected" (0x01, the node state of
+       DS 301 v3 node guarding; README, behaviour decisions), not the last
+       state it reported; a master that only polls sees it stopped */
+    bState = 0;
+    CHECK_RET(CcmHbcGetNodeState(ID_S, &bState), kCopSuccessful);
+    CHECK_EQ(bState, 0x01);
+    Run(30, 0);
+    CHECK_RET(CcmHbcGetNodeState(ID_S, &bState), kCopSuccessful);
+    CHECK_EQ(bState, 0x01);
+    /* until its next heartbeat */
+    uHbc_g = 0;
+    Run(30, 1);
+    CHECK(SawHbc(ID_S, kNmtErrCtrlEvHbcConnected));
+    CHECK_RET(CcmHbcGetNodeState(ID_S, &bState), kCopSuccessful);
+    CHECK_EQ(bState, kNodeStateOperational);
 
     SimSelectNode(SIM_S);
     CHECK_RET(CcmConfigHbp(0), kCopSuccessful);
