@@ -408,7 +408,8 @@ tCopKernel CcmInitHbcEx(tAppHbcEventCallback fpHbcEventCallback_p);
 tCopKernel CcmHbcDefineProducerTab(const tHbcProdParam *pbProducerTab_p, BYTE bNumOfProducer_p);
 
 /**
- * `CcmHbcGetNodeState`: the last NMT state a supervised node reported.
+ * `CcmHbcGetNodeState`: the last NMT state a supervised node reported;
+ * 0x01 ("disconnected") from a heartbeat loss until its next heartbeat.
  * kCopInvalidParam (NULL), kCopHbcEntryNotExist (node not supervised or
  * not heard yet).
  *

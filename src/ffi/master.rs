@@ -272,7 +272,8 @@ pub unsafe extern "C" fn CcmHbcDefineProducerTab(
     }))
 }
 
-/// `CcmHbcGetNodeState`: the last NMT state a supervised node reported.
+/// `CcmHbcGetNodeState`: the last NMT state a supervised node reported;
+/// 0x01 ("disconnected") from a heartbeat loss until its next heartbeat.
 /// kCopInvalidParam (NULL), kCopHbcEntryNotExist (node not supervised or
 /// not heard yet).
 ///
