@@ -283,38 +283,54 @@ fn mapping_rules_over_the_write_path() {
     );
     assert_eq!(net.p.read(0x13FE, 0), 0xA5);
     net.p.write(0x1301, 1, 0, 1).unwrap();
-    // More entries than SRDO_MAX_MAPPENTRIES.
+    // Each mapping write is checked at once (manual 2.5), with the CiA 301
+    // abort naming the reason (CiA 301 table 22); nothing changes.
+    let mapp_err = CopKernel::SrdoErrorMapp;
     let too_many = cop::config::SRDO_MAX_MAPPENTRIES as u32 + 1;
-    assert_eq!(
-        net.p.write(0x1381, 0, too_many, 1),
-        refused(CopKernel::SrdoErrorMapp, 0x0609_0030)
-    );
-    // Odd number of entries: refused by the check.
-    assert_eq!(
-        check_after(&mut net.p, &[(0x1381, 0, 3, 1), (0x1301, 1, 1, 1)]),
-        refused(CopKernel::SrdoErrorMapp, 0x0800_0020)
-    );
-    // An object that does not exist.
-    assert_eq!(
-        remap(
-            &mut net.p,
-            &[(0x1381, 0, 2, 1), (0x1381, 1, 0x6202_0110, 4)]
-        ),
-        refused(CopKernel::SrdoErrorMapp, 0x0800_0020)
-    );
-    // Five pairs of 16 bits: 10 bytes do not fit a frame.
+    let cases: [(Write, CopKernel, u32); 6] = [
+        // More entries than SRDO_MAX_MAPPENTRIES.
+        ((0x1381, 0, too_many, 1), mapp_err, 0x0604_0042),
+        // An odd number of entries.
+        ((0x1381, 0, 3, 1), mapp_err, 0x0604_0043),
+        // An object that does not exist, a subindex that does not.
+        ((0x1381, 1, 0x3000_0110, 4), mapp_err, 0x0602_0000),
+        ((0x1381, 1, 0x6202_0110, 4), mapp_err, 0x0602_0000),
+        ((0x1381, 1, 0x6200_0210, 4), mapp_err, 0x0609_0011),
+        // An object that cannot be mapped (SCT).
+        ((0x1381, 1, 0x1301_0210, 4), mapp_err, 0x0604_0041),
+    ];
+    for ((index, sub, v, len), kernel, abort) in cases {
+        let before = net.p.read(index, sub);
+        assert_eq!(
+            net.p.write(index, sub, v, len),
+            refused(kernel, abort),
+            "{index:#x} sub {sub} = {v:#x}"
+        );
+        assert_eq!(net.p.read(index, sub), before);
+    }
+    // Five pairs of 16 bits: 10 bytes do not fit a frame; the count that
+    // would enable them is refused (0x06040042).
     if cop::config::SRDO_MAX_MAPPENTRIES >= 10 {
         let mut w = vec![(0x1381u16, 0u8, 0u32, 1usize)];
         for pair in 0..5u8 {
             w.push((0x1381, 2 * pair + 1, 0x6200_0110, 4));
             w.push((0x1381, 2 * pair + 2, 0x6300_0110, 4));
         }
-        w.push((0x1381, 0, 10, 1));
+        for &(index, sub, v, len) in &w {
+            net.p.write(index, sub, v, len).unwrap();
+        }
         assert_eq!(
-            remap(&mut net.p, &w),
-            refused(CopKernel::SrdoLengthExceeded, 0x0800_0020)
+            net.p.write(0x1381, 0, 10, 1),
+            refused(CopKernel::SrdoLengthExceeded, 0x0604_0042)
         );
+        assert_eq!(net.p.read(0x1381, 0), 0);
     }
+    // The full check still runs at 0xA5: an empty mapping of an active
+    // SRDO passes each write and fails there.
+    assert_eq!(
+        check_after(&mut net.p, &[(0x1381, 0, 0, 1), (0x1301, 1, 1, 1)]),
+        refused(CopKernel::SrdoErrorMapp, 0x0800_0020)
+    );
     // Back to the original mapping: valid again.
     assert_eq!(
         remap(

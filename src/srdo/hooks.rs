@@ -12,20 +12,30 @@
 //! | sub 5 | not odd in 0x101..=0x17F (bits 31..11 zero) | `kCopSrdoCfgIdError` | 0x06090030 |
 //! | sub 6 | not even in 0x102..=0x180 (bits 31..11 zero) | `kCopSrdoCfgIdError` | 0x06090030 |
 //! | 0x1381+n any sub | direction ≠ 0 and another value than the one in force | `kCopSrdoInvalidCfg` | 0x06090030 |
-//! | 0x1381+n sub 0 | above `SRDO_MAX_MAPPENTRIES` or the entries present | `kCopSrdoErrorMapp` | 0x06090030 |
+//! | 0x1381+n sub 0 | above `SRDO_MAX_MAPPENTRIES` or the entries present | `kCopSrdoErrorMapp` | 0x06040042 |
+//! | 0x1381+n sub 0 = n | odd, or a pair of unequal length | `kCopSrdoErrorMapp` | 0x06040043 |
+//! | | an entry of the n refused as below | as below | as below |
+//! | | more than 8 bytes of normal data | `kCopSrdoLengthExceeded` | 0x06040042 |
+//! | 0x1381+n sub 1.. (not 0) | the object does not exist | `kCopSrdoErrorMapp` | 0x06020000 / 0x06090011 |
+//! | | not mappable, wrong length, no variable, access not for the declared direction, dummy not allowed | `kCopSrdoErrorMapp` | 0x06040041 |
+//! | | length not a multiple of `SRDO_GRANULARITY` (sub 0: any entry) | `kCopSrdoGranularityMismatch` | 0x06040043 |
 //! | 0x13FE = 0xA5 | the configuration check fails | the check's code | 0x08000020 |
 //!
 //! A refused write changes nothing, 0x13FE included. An accepted write to a
 //! safety parameter (0x1301..0x1340, 0x1381..0x13C0, 0x13FF) sets 0x13FE to
-//! 0 just before the value is stored. Whether COB-ID 1 and 2 form a pair,
-//! and everything about the mapped objects, is left to the configuration
-//! check, because a configuration tool writes one value at a time.
+//! 0 just before the value is stored. Whether COB-ID 1 and 2 form a pair
+//! is left to the configuration check, because a configuration tool writes
+//! one value at a time; the mapping is checked at each change (manual 2.5,
+//! `check::mapping_write`): an entry on its own, the count with the
+//! entries it enables. The direction the objects' access must fit is the
+//! one the dictionary declares for the SRDO (the direction is 0 while the
+//! mapping changes); the check at 0xA5 judges the direction in force.
 
 use super::{
     COMMU_FIRST, COMMU_LAST, CONFIG_VALID, CONFIG_VALID_INDEX, CRC_INDEX, Direction,
     GFC_PARAM_INDEX, MAPP_FIRST, MAPP_LAST, MAPP_OFFSET, Srdo, TRANSMISSION_TYPE, read_u8,
 };
-use crate::config::SRDO_MAX_MAPPENTRIES;
+use crate::config::SRDO_GRANULARITY;
 use crate::error::{CopKernel, OdError, SdoAbort};
 use crate::event::NmtState;
 use crate::od::{Object, ObjectDictionary, Staged};
@@ -101,14 +111,7 @@ impl Srdo {
                         Err(range(CopKernel::SrdoInvalidCfg))
                     };
                 }
-                if obj.sub() == 0 {
-                    let present = od
-                        .find_entry(commu_index + MAPP_OFFSET)
-                        .map_or(0, |e| od.sub_count(e).saturating_sub(1));
-                    if v > SRDO_MAX_MAPPENTRIES as u64 || v > present as u64 {
-                        return Err(range(CopKernel::SrdoErrorMapp));
-                    }
-                }
+                super::check::mapping_write(od, commu_index, obj.sub(), v, SRDO_GRANULARITY)?;
             }
         }
         Ok(())
