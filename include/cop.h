@@ -423,8 +423,11 @@ tCopKernel CcmHbcGetNodeState(BYTE bNodeId_p, BYTE *pNodeState_p);
  * valid flags select the fields taken (kSdocValidFlagRxCanId 0x01,
  * TxCanId 0x02, ServerNodeId 0x04, TimeOut 0x08); a node-ID without
  * COB-IDs gives the predefined connection set (0x600 / 0x580 + node-ID).
+ * A transfer running on a channel defined again ends as `CcmSdocAbort`
+ * ends it (abort frame with SDOAC_GENERAL_ERROR to the old server; its
+ * finish callback is called before this function returns).
  * kCopInvalidParam (NULL), kCopSdocClientNotExist (index outside
- * 0x1280.. + `SDO_MAX_CLIENT_IN_OBD`), kCopSdocInvalidParam, kCopSdocBusy.
+ * 0x1280.. + `SDO_MAX_CLIENT_IN_OBD`), kCopSdocInvalidParam.
  *
  * # Safety
  * `pClientTab_p` must be valid for `bNumOfClients_p` entries.
