@@ -8,7 +8,9 @@
 //   SRDO 2 (0x1302): transmit, refresh time 50 ms, SRVT 20 ms, COB-IDs
 //                    0x103/0x104, from bPeerOut_g / bPeerOutInv_g
 //
-// 0x2054 holds two 64-bit mappable objects (a mapping longer than 8 bytes).
+// 0x2054 holds two 64-bit mappable objects (a mapping longer than 8 bytes);
+// 0x6200 (4 x UNSIGNED8) and 0x6300 (2 x UNSIGNED16) are the objects the
+// CRC vectors of SAFETY_BEHAVIOUR.md section 3 map.
 // The init function is ObdInitRamSrdoPeer.
 
 #define OBD_DEFINE_MACRO
@@ -80,7 +82,23 @@ OBD_BEGIN ()
 
     OBD_END_PART ()
 
+    // the objects the CRC vectors of SAFETY_BEHAVIOUR.md section 3 map: a
+    // mapping entry must name an object that exists (manual 2.5)
     OBD_BEGIN_PART_DEVICE ()
+
+        OBD_BEGIN_INDEX_RAM(0x6200, 0x05, NULL)
+            OBD_SUBINDEX_ROM_VAR(0x6200, 0x00, 0x05, 0x01, tObdUnsigned8, Count, 0x04)
+            OBD_SUBINDEX_RAM_VAR(0x6200, 0x01, 0x05, 0x0B, tObdUnsigned8, Byte_1, 0x00)
+            OBD_SUBINDEX_RAM_VAR(0x6200, 0x02, 0x05, 0x0B, tObdUnsigned8, Byte_2, 0x00)
+            OBD_SUBINDEX_RAM_VAR(0x6200, 0x03, 0x05, 0x0B, tObdUnsigned8, Byte_3, 0x00)
+            OBD_SUBINDEX_RAM_VAR(0x6200, 0x04, 0x05, 0x0B, tObdUnsigned8, Byte_4, 0x00)
+        OBD_END_INDEX(0x6200)
+        OBD_BEGIN_INDEX_RAM(0x6300, 0x03, NULL)
+            OBD_SUBINDEX_ROM_VAR(0x6300, 0x00, 0x05, 0x01, tObdUnsigned8, Count, 0x02)
+            OBD_SUBINDEX_RAM_VAR(0x6300, 0x01, 0x06, 0x0B, tObdUnsigned16, Word_1, 0x0000)
+            OBD_SUBINDEX_RAM_VAR(0x6300, 0x02, 0x06, 0x0B, tObdUnsigned16, Word_2, 0x0000)
+        OBD_END_INDEX(0x6300)
+
     OBD_END_PART ()
 
 OBD_END ()

@@ -317,6 +317,21 @@ static void Heartbeat (void)
     /* the slave goes silent for more than 50 ms */
     Run(80, 0);
     CHECK(SawHbc(ID_S, kNmtErrCtrlEvHbcConnectionLost));
+    /* from the loss on the node is "disconnected" (0x01, the node state of
+       DS 301 v3 node guarding; README, behaviour decisions), not the last
+       state it reported; a master that only polls sees it stopped */
+    bState = 0;
+    CHECK_RET(CcmHbcGetNodeState(ID_S, &bState), kCopSuccessful);
+    CHECK_EQ(bState, 0x01);
+    Run(30, 0);
+    CHECK_RET(CcmHbcGetNodeState(ID_S, &bState), kCopSuccessful);
+    CHECK_EQ(bState, 0x01);
+    /* until its next heartbeat */
+    uHbc_g = 0;
+    Run(30, 1);
+    CHECK(SawHbc(ID_S, kNmtErrCtrlEvHbcConnected));
+    CHECK_RET(CcmHbcGetNodeState(ID_S, &bState), kCopSuccessful);
+    CHECK_EQ(bState, kNodeStateOperational);
 
     SimSelectNode(SIM_S);
     CHECK_RET(CcmConfigHbp(0), kCopSuccessful);
@@ -379,7 +394,6 @@ static void SdoClient (void)
     TestExpectFrame("SDO download 0x6200/1", 0x600 + ID_S, 8, abDownload);
     CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopSdocBusy);
     CHECK_EQ(SdocState(&dwAbort), kSdocTransferRunning);
-    CHECK_RET(CcmSdocDefineClientTab(&Client, 1), kCopSdocBusy);
     Run(2, 1);
     CHECK_EQ(SdocState(&dwAbort), kSdocTransferFinished);
     CHECK_EQ(dwAbort, 0);
@@ -452,6 +466,70 @@ static void SdoClient (void)
     CHECK_RET(CcmSdocGetState(0x1280, NULL, &dwAbort), kCopInvalidParam);
     CHECK_RET(CcmSdocGetState(0x1280, &State, NULL), kCopInvalidParam);
     CHECK_RET(CcmSdocGetState(0x1281, &State, &dwAbort), kCopSdocClientNotExist);
+    TestDrainSent();
+}
+
+/* A master that gives up on an absent server before the client's own
+ * timeout and defines the client again (as a master adapter does at start
+ * with slaves missing): the running transfer ends as CcmSdocAbort ends it
+ * (abort frame to the server with SDOAC_GENERAL_ERROR, the finish callback
+ * told before CcmSdocDefineClientTab returns) and the new definition is
+ * taken, so the next transfer starts. */
+static void SdoClientRedefined (void)
+{
+    /* CiA 301 7.2.4.3.2: ccs 2 initiate upload, 0x1018 sub 1 */
+    static CONST BYTE abUpload[8] = { 0x40, 0x18, 0x10, 0x01, 0x00, 0x00, 0x00, 0x00 };
+    /* CiA 301 7.2.4.3.17: cs 4 abort, the same multiplexer, code LE */
+    static CONST BYTE abAbort[8] = { 0x80, 0x18, 0x10, 0x01, 0x00, 0x00, 0x00, 0x08 };
+    tSdocParam Client;
+    tSdocTransferParam Transfer;
+    BYTE abData[4];
+    DWORD dwAbort = 0;
+    unsigned uBefore;
+
+    TestDrainSent();
+    memset(&Client, 0, sizeof(Client));
+    Client.m_bValidFlags = kSdocValidFlagServerNodeId;
+    Client.m_wClientIndex = 0x1280;
+    Client.m_bServerNodeId = 5;                         /* no such node */
+    CHECK_RET(CcmSdocDefineClientTab(&Client, 1), kCopSuccessful);
+
+    memset(&Transfer, 0, sizeof(Transfer));
+    Transfer.m_wClientIndex = 0x1280;
+    Transfer.m_wObjIndex = 0x1018;
+    Transfer.m_bObjSubIndex = 1;
+    Transfer.m_pData = abData;
+    Transfer.m_DataLen = sizeof(abData);
+    Transfer.m_SdocType = kSdocTypeSegUp;
+    Transfer.m_pfnCbFinished = SdocFinished;
+    CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopSuccessful);
+    TestExpectFrame("SDO upload to the absent node 5", 0x605, 8, abUpload);
+    Run(50, 0);                                         /* no answer, not timed out */
+    CHECK_EQ(SdocState(&dwAbort), kSdocTransferRunning);
+
+    /* defined again, for node ID_S */
+    uBefore = uFinished_g;
+    Client.m_bServerNodeId = ID_S;
+    CHECK_RET(CcmSdocDefineClientTab(&Client, 1), kCopSuccessful);
+    TestExpectFrame("SDO abort to node 5", 0x605, 8, abAbort);
+    CHECK_EQ(uFinished_g, uBefore + 1);
+    CHECK_EQ(LastFinish_g.m_wClientIndex, 0x1280);
+    CHECK_EQ(LastFinish_g.m_SdocState, kSdocTransferTxAborted);
+    CHECK_EQ(LastFinish_g.m_dwAbortCode, SDOAC_GENERAL_ERROR);
+    CHECK_EQ(SdocState(&dwAbort), kSdocTransferTxAborted);
+    CHECK_EQ(dwAbort, SDOAC_GENERAL_ERROR);
+
+    /* the new definition is in force: the next transfer goes to node ID_S */
+    memset(abData, 0, sizeof(abData));
+    CHECK_RET(CcmSdocStartTransfer(&Transfer), kCopSuccessful);
+    TestExpectFrame("SDO upload to node 3", 0x600 + ID_S, 8, abUpload);
+    Run(2, 1);
+    CHECK_EQ(SdocState(&dwAbort), kSdocTransferFinished);
+    CHECK_EQ(uFinished_g, uBefore + 2);
+    CHECK_EQ(LastFinish_g.m_SdocState, kSdocTransferFinished);
+    /* no frame left over for node 5: the old transfer is over */
+    Run(1200, 0);
+    CHECK_EQ(uFinished_g, uBefore + 2);
     TestDrainSent();
 }
 
@@ -546,6 +624,7 @@ int main (void)
     Guarding();
     Heartbeat();
     SdoClient();
+    SdoClientRedefined();
     SdoBlock();
 
     SimSelectNode(SIM_S);

@@ -330,6 +330,31 @@ static void NoInitDomainUserdef (void)
     aVar[0].m_bSubindex = 9;
     CHECK_RET(CcmDefineVarTab(aVar, 1), kCopObdSubindexNotExist);
     CHECK_RET(CcmDefineVarTab(NULL, 1), kCopInvalidParam);
+
+    /* a NULL variable with kVarValidData is a NULL pointer like any other
+       (README, API conventions): refused, and no entry of the table is
+       taken, not even the valid one before it */
+    {
+        static tObdUnsigned32 dwOther;
+        memset(aVar, 0, sizeof(aVar));
+        aVar[0].m_bValidFlag = kVarValidSize | kVarValidData;
+        aVar[0].m_wIndex = 0x2006;
+        aVar[0].m_bSubindex = 1;
+        aVar[0].m_Size = (tObdSize) sizeof(dwOther);
+        aVar[0].m_pData = &dwOther;
+        aVar[1].m_bValidFlag = kVarValidData;
+        aVar[1].m_wIndex = 0x2006;
+        aVar[1].m_bSubindex = 3;
+        aVar[1].m_pData = NULL;
+        dwUser = 0x12345678UL;
+        dwOther = 0;
+        CHECK_RET(CcmDefineVarTab(aVar, 2), kCopInvalidParam);
+        CHECK_RET(CcmDefineVarTab(&aVar[1], 1), kCopInvalidParam);
+        READ_EXPECT(0x2006, 1, DWORD, 0x12345678UL);
+        WRITE_VALUE(0x2006, 3, BYTE, 0x5A, kCopSuccessful);
+        CHECK_EQ(bUser, 0x5A);
+        CHECK_EQ(dwOther, 0);
+    }
 }
 
 static void Arrays (void)

@@ -237,6 +237,7 @@ static void CheckConfigCodes (void)
     static CONST tCrcVector Missing = {
         2, 100, 20, 0x101, 0x102, 2, { 0x20FF0108, 0x20510108, 0, 0 }, 0 };
     WORD wIndex = 0;
+    BYTE i;
 
     SimSelectNode(SIM_P);
     /* factory state: 0x13FF holds 0 for both SRDOs */
@@ -301,26 +302,36 @@ static void CheckConfigCodes (void)
     CHECK_RET(TestWriteU32(0x1302, 6, 0x104), kCopSuccessful);
     CHECK_RET(TestWriteU8(0x1302, 1, 1), kCopSuccessful);
 
-    /* mapping */
-    CHECK_RET(TestWriteU32(0x1381, 1, 0x20500108), kCopSrdoInvalidCfg);  /* not while active */
-    WriteSrdo1(&Missing);
-    CHECK_RET(Declare(), kCopSrdoErrorMapp);
-    ExpectCheck(kCopSrdoErrorMapp, 0x1301);
+    /* mapping: checked at each write (manual 2.5: "Das SRDO Modul
+     * ueberprueft bei jeder Aenderung des Mappings die gewaehlten
+     * Parameter"), refused with the check's code, nothing changed; the
+     * check at 0xA5 still runs */
+    CHECK_RET(TestWriteU32(0x1381, 1, 0x20510108), kCopSrdoInvalidCfg);  /* not while active */
+    CHECK_RET(TestWriteU32(0x1381, 1, 0x20500108), kCopSuccessful);      /* the value in force */
+    CHECK_RET(Declare(), kCopSuccessful);
     CHECK_RET(TestWriteU8(0x1381, 0, 5), kCopSrdoInvalidCfg);            /* active */
     CHECK_RET(TestWriteU8(0x1301, 1, 0), kCopSuccessful);
+    CHECK_RET(TestWriteU8(0x1381, 0, 0), kCopSuccessful);
+    CHECK_RET(TestWriteU32(0x1381, 1, Missing.m_adwMapp[0]), kCopSrdoErrorMapp);  /* no 0x20FF */
+    CHECK_RET(TestWriteU32(0x1381, 1, Nibble.m_adwMapp[0]), kCopSrdoErrorMapp);   /* 4 bits of 8 */
+    CHECK_RET(TestWriteU32(0x1381, 1, 0x20530108), kCopSuccessful);
+    CHECK_RET(TestWriteU32(0x1381, 2, 0x20540140), kCopSuccessful);     /* alone, each fits */
     CHECK_RET(TestWriteU8(0x1381, 0, 5), kCopSrdoErrorMapp);             /* only 4 entries */
-    CHECK_RET(TestWriteU8(0x1381, 0, 3), kCopSuccessful);                /* odd */
+    CHECK_RET(TestWriteU8(0x1381, 0, 1), kCopSrdoErrorMapp);             /* odd */
+    CHECK_RET(TestWriteU8(0x1381, 0, 2), kCopSrdoErrorMapp);             /* 8 bits with 64 */
+    CHECK_EQ(TestReadU8(0x1381, 0), 0);
+    for (i = 0; i < Wide.m_bCount; i++)
+    {
+        CHECK_RET(TestWriteU32(0x1381, (BYTE) (i + 1), Wide.m_adwMapp[i]), kCopSuccessful);
+    }
+    CHECK_RET(TestWriteU8(0x1381, 0, Wide.m_bCount), kCopSrdoLengthExceeded);  /* 16 bytes */
+    CHECK_EQ(TestReadU8(0x1381, 0), 0);
+    /* an active SRDO without mapping passes each write and fails at 0xA5 */
     CHECK_RET(TestWriteU8(0x1301, 1, 2), kCopSuccessful);
     CHECK_RET(Declare(), kCopSrdoErrorMapp);
-    WriteSrdo1(&Wide);                                                   /* 16 bytes of normal data */
-    CHECK_RET(Declare(), kCopSrdoLengthExceeded);
-    ExpectCheck(kCopSrdoLengthExceeded, 0x1301);
-    /* an entry must map its object exactly (4 bits of an 8-bit object);
-     * kCopSrdoGranularityMismatch needs a granularity above 8:
-     * test_srdo_granularity.c */
-    WriteSrdo1(&Nibble);
-    CHECK_RET(Declare(), kCopSrdoErrorMapp);
     ExpectCheck(kCopSrdoErrorMapp, 0x1301);
+    /* kCopSrdoGranularityMismatch needs a granularity above 8:
+     * test_srdo_granularity.c */
 
     CHECK_RET(CcmNmtsExecCommand(kNmtCommResetCommunication), kCopSuccessful);
     TestProcess(1);

@@ -195,7 +195,8 @@ tCopKernel CcmSendEmergency(CCM_DECL_INSTANCE_HDL_ const tEmcParam *pEmcpParam_p
 
 /**
  * `CcmDefineVarTab`: attaches application variables to USERDEF / DOMAIN
- * objects (their `tObdVarEntry`). kCopInvalidParam for NULL,
+ * objects (their `tObdVarEntry`). kCopInvalidParam for NULL (the table,
+ * or an `m_pData` of NULL with kVarValidData: then no entry is taken),
  * kCopObdIndexNotExist / kCopObdSubindexNotExist, kCopObdVarEntryNotExist
  * when the object is not a USERDEF/DOMAIN object, kCopObdValueLengthError
  * when the size does not fit the object's type. Entries before a failing
@@ -445,7 +446,8 @@ tCopKernel CcmHbcDefineProducerTab(CCM_DECL_INSTANCE_HDL_
                                    BYTE bNumOfProducer_p);
 
 /**
- * `CcmHbcGetNodeState`: the last NMT state a supervised node reported.
+ * `CcmHbcGetNodeState`: the last NMT state a supervised node reported;
+ * 0x01 ("disconnected") from a heartbeat loss until its next heartbeat.
  * kCopInvalidParam (NULL), kCopHbcEntryNotExist (node not supervised or
  * not heard yet).
  *
@@ -459,8 +461,11 @@ tCopKernel CcmHbcGetNodeState(CCM_DECL_INSTANCE_HDL_ BYTE bNodeId_p, BYTE *pNode
  * valid flags select the fields taken (kSdocValidFlagRxCanId 0x01,
  * TxCanId 0x02, ServerNodeId 0x04, TimeOut 0x08); a node-ID without
  * COB-IDs gives the predefined connection set (0x600 / 0x580 + node-ID).
+ * A transfer running on a channel defined again ends as `CcmSdocAbort`
+ * ends it (abort frame with SDOAC_GENERAL_ERROR to the old server; its
+ * finish callback is called before this function returns).
  * kCopInvalidParam (NULL), kCopSdocClientNotExist (index outside
- * 0x1280.. + `SDO_MAX_CLIENT_IN_OBD`), kCopSdocInvalidParam, kCopSdocBusy.
+ * 0x1280.. + `SDO_MAX_CLIENT_IN_OBD`), kCopSdocInvalidParam.
  *
  * # Safety
  * `pClientTab_p` must be valid for `bNumOfClients_p` entries.

@@ -393,14 +393,15 @@ impl Stack {
         &self.sdoc
     }
 
-    /// Defines an SDO client channel and subscribes its response COB-ID.
+    /// Defines an SDO client channel and subscribes its response COB-ID; a
+    /// transfer running on it is aborted first ([`SdoClient::define`]).
     pub fn define_sdo_client(
         &mut self,
         port: &mut impl CanPort,
         index: u16,
         p: crate::sdo::client::ClientParam,
     ) -> CopResult {
-        self.sdoc.define(index, p)?;
+        self.sdoc.define(port, index, p, &mut self.queue)?;
         self.subscribe(port);
         Ok(())
     }

@@ -161,6 +161,57 @@ fn timeout_aborts_and_busy_is_refused() {
     );
 }
 
+/// A channel defined again while its transfer runs (a master that gives
+/// up on an absent server before the client's timeout): the transfer ends
+/// as an abort by the client does (abort frame to the server, CiA 301
+/// 7.2.4.3.17, code 0x08000000 "general error"; `SdocFinished` with
+/// TxAborted) and the new definition is taken.
+#[test]
+fn a_busy_channel_defined_again_ends_its_transfer_and_takes_the_new_one() {
+    let _g = serial();
+    let mut net = Net::new();
+    let now = net.bus.now();
+    let (sp, ss) = &mut net.server;
+    ss.exec_command(cop::ccm::NmtCommand::StopRemoteNode)
+        .unwrap();
+    while ss.drain(sp, now).is_some() {}
+    net.start(Direction::Upload, 0x2000, &RX_BUF, 4).unwrap();
+    net.run(100);
+    assert_eq!(net.state().0, SdocState::Running);
+    net.bus.clear_trace();
+    let node_3 = ClientParam {
+        tx_cob: 0x603,
+        rx_cob: 0x583,
+        server_node: 3,
+        timeout_ticks: 0,
+    };
+    let (port, stack) = &mut net.master;
+    assert_eq!(stack.define_sdo_client(port, 0x1280, node_3), Ok(()));
+    assert_eq!(
+        net.bus.trace(),
+        ["  can0  602   [8]  80 00 20 00 00 00 00 08"],
+        "the abort goes to the server of the old definition"
+    );
+    assert_eq!(net.state(), (SdocState::TxAborted, 0x0800_0000));
+    assert_eq!(net.master.1.sdoc().param(0x1280), Ok(node_3));
+    net.run(1);
+    assert_eq!(
+        net.finished,
+        [Event::SdocFinished {
+            client: 0x1280,
+            state: SdocState::TxAborted as u8,
+            abort: 0x0800_0000
+        }]
+    );
+    // The next transfer runs on the new definition.
+    net.bus.clear_trace();
+    net.start(Direction::Upload, 0x2000, &RX_BUF, 4).unwrap();
+    assert_eq!(
+        net.bus.trace(),
+        ["  can0  603   [8]  40 00 20 00 00 00 00 00"]
+    );
+}
+
 #[test]
 fn bad_arguments_give_codes() {
     let _g = serial();

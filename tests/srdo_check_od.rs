@@ -228,13 +228,17 @@ mod count_bound {
     static GENERIC_SHORT: [ObdEntry; 5] = generic(&commu_off::SUBS, &mapp_short::SUBS);
     static GENERIC_OFF: [ObdEntry; 5] = generic(&commu_off::SUBS, &mapp::SUBS);
 
-    /// `CcmWriteObject` of the mapping count 0x1381 sub 0 on `generic`.
-    fn write_count(generic: &'static [ObdEntry], counts: &[(u8, Result<(), CopKernel>)]) {
+    /// A write's verdict: the kernel code and the SDO abort code.
+    type Verdict = Result<(), (CopKernel, u32)>;
+
+    /// `CcmWriteObject` of the mapping count 0x1381 sub 0 on `generic`:
+    /// the kernel code and the SDO abort code.
+    fn write_count(generic: &'static [ObdEntry], counts: &[(u8, Verdict)]) {
         let (_g, mut s, _) = sealed(generic);
         for &(count, expected) in counts {
             let r = s
                 .write_object(0x1381, 0, ByteOrder::Wire, &[count], Ticks(0))
-                .map_err(|e| e.kernel);
+                .map_err(|e| (e.kernel, e.abort));
             assert_eq!(r, expected, "count {count}");
         }
     }
@@ -242,11 +246,21 @@ mod count_bound {
     // req: SB-2-MAPPING
     #[test]
     fn the_mapping_count_is_bounded_by_the_capacity_and_the_subindices() {
-        let refused = Err(CopKernel::SrdoErrorMapp);
+        // CiA 301 table 22: 0x06040042, the number of mapped objects would
+        // exceed the PDO (here: SRDO) length.
+        let bound = Err((CopKernel::SrdoErrorMapp, 0x0604_0042));
         // 4 entry subindices, fewer than SRDO_MAX_MAPPENTRIES: 4 at most.
-        write_count(&GENERIC_SHORT, &[(5, refused), (4, Ok(())), (0, Ok(()))]);
-        // SRDO_MAX_MAPPENTRIES subindices: up to the capacity.
+        write_count(&GENERIC_SHORT, &[(5, bound), (4, Ok(())), (0, Ok(()))]);
+        // SRDO_MAX_MAPPENTRIES subindices: up to the capacity, where the
+        // entries decide (0x06040041: entries 3.. are empty).
         let max = SRDO_MAX_MAPPENTRIES as u8;
-        write_count(&GENERIC_OFF, &[(max + 1, refused), (max, Ok(()))]);
+        write_count(
+            &GENERIC_OFF,
+            &[
+                (max + 1, bound),
+                (max, Err((CopKernel::SrdoErrorMapp, 0x0604_0041))),
+                (2, Ok(())),
+            ],
+        );
     }
 }

@@ -127,6 +127,46 @@ fn refused_writes_change_nothing() {
     assert_eq!(net.p.read(0x1301, 5), 0x103);
 }
 
+/// SAFETY_BEHAVIOUR.md section 2 and manual 1.1.1 restrict *changes* of
+/// the COB-IDs and the mapping to direction 0: a write of the value in
+/// force is no change and is accepted, and 0x13FE still drops to 0 as for
+/// every safety write.
+// req: SB-2-IDENTICAL
+#[test]
+fn a_write_of_the_value_in_force_is_accepted_while_active() {
+    let mut net = Net::preoperational();
+    assert_eq!(net.p.read(0x1301, 1), 1, "SRDO 1 transmits");
+    let same: Vec<Write> = [(0x1301u16, 5u8, 4usize), (0x1301, 6, 4)]
+        .into_iter()
+        .chain(if cfg!(feature = "srdo-static-mapping") {
+            vec![]
+        } else {
+            vec![(0x1381, 0, 1), (0x1381, 1, 4), (0x1381, 4, 4)]
+        })
+        .map(|(index, sub, len)| (index, sub, net.p.read(index, sub), len))
+        .collect();
+    for (index, sub, v, len) in same {
+        assert_eq!(
+            net.p.write(index, sub, v, len),
+            Ok(()),
+            "{index:#x} sub {sub} = {v:#x} again"
+        );
+        assert_eq!(net.p.read(index, sub), v);
+        assert_eq!(net.p.read(0x13FE, 0), 0, "{index:#x} sub {sub}");
+        reseal(&mut net.p).unwrap();
+    }
+    // Another value is still a change and still refused.
+    let cob1 = net.p.read(0x1301, 5);
+    assert_eq!(
+        net.p.write(0x1301, 5, cob1 + 2, 4),
+        refused(CopKernel::SrdoInvalidCfg, 0x0609_0030)
+    );
+    assert_eq!(net.p.read(0x13FE, 0), 0xA5);
+    // The configuration sealed after the identical writes runs (`start`
+    // checks that both nodes' SRDOs run).
+    net.start();
+}
+
 // req: SB-1-TTYPE
 #[test]
 fn transmission_type_is_constant_254() {
@@ -243,38 +283,54 @@ fn mapping_rules_over_the_write_path() {
     );
     assert_eq!(net.p.read(0x13FE, 0), 0xA5);
     net.p.write(0x1301, 1, 0, 1).unwrap();
-    // More entries than SRDO_MAX_MAPPENTRIES.
+    // Each mapping write is checked at once (manual 2.5), with the CiA 301
+    // abort naming the reason (CiA 301 table 22); nothing changes.
+    let mapp_err = CopKernel::SrdoErrorMapp;
     let too_many = cop::config::SRDO_MAX_MAPPENTRIES as u32 + 1;
-    assert_eq!(
-        net.p.write(0x1381, 0, too_many, 1),
-        refused(CopKernel::SrdoErrorMapp, 0x0609_0030)
-    );
-    // Odd number of entries: refused by the check.
-    assert_eq!(
-        check_after(&mut net.p, &[(0x1381, 0, 3, 1), (0x1301, 1, 1, 1)]),
-        refused(CopKernel::SrdoErrorMapp, 0x0800_0020)
-    );
-    // An object that does not exist.
-    assert_eq!(
-        remap(
-            &mut net.p,
-            &[(0x1381, 0, 2, 1), (0x1381, 1, 0x6202_0110, 4)]
-        ),
-        refused(CopKernel::SrdoErrorMapp, 0x0800_0020)
-    );
-    // Five pairs of 16 bits: 10 bytes do not fit a frame.
+    let cases: [(Write, CopKernel, u32); 6] = [
+        // More entries than SRDO_MAX_MAPPENTRIES.
+        ((0x1381, 0, too_many, 1), mapp_err, 0x0604_0042),
+        // An odd number of entries.
+        ((0x1381, 0, 3, 1), mapp_err, 0x0604_0043),
+        // An object that does not exist, a subindex that does not.
+        ((0x1381, 1, 0x3000_0110, 4), mapp_err, 0x0602_0000),
+        ((0x1381, 1, 0x6202_0110, 4), mapp_err, 0x0602_0000),
+        ((0x1381, 1, 0x6200_0210, 4), mapp_err, 0x0609_0011),
+        // An object that cannot be mapped (SCT).
+        ((0x1381, 1, 0x1301_0210, 4), mapp_err, 0x0604_0041),
+    ];
+    for ((index, sub, v, len), kernel, abort) in cases {
+        let before = net.p.read(index, sub);
+        assert_eq!(
+            net.p.write(index, sub, v, len),
+            refused(kernel, abort),
+            "{index:#x} sub {sub} = {v:#x}"
+        );
+        assert_eq!(net.p.read(index, sub), before);
+    }
+    // Five pairs of 16 bits: 10 bytes do not fit a frame; the count that
+    // would enable them is refused (0x06040042).
     if cop::config::SRDO_MAX_MAPPENTRIES >= 10 {
         let mut w = vec![(0x1381u16, 0u8, 0u32, 1usize)];
         for pair in 0..5u8 {
             w.push((0x1381, 2 * pair + 1, 0x6200_0110, 4));
             w.push((0x1381, 2 * pair + 2, 0x6300_0110, 4));
         }
-        w.push((0x1381, 0, 10, 1));
+        for &(index, sub, v, len) in &w {
+            net.p.write(index, sub, v, len).unwrap();
+        }
         assert_eq!(
-            remap(&mut net.p, &w),
-            refused(CopKernel::SrdoLengthExceeded, 0x0800_0020)
+            net.p.write(0x1381, 0, 10, 1),
+            refused(CopKernel::SrdoLengthExceeded, 0x0604_0042)
         );
+        assert_eq!(net.p.read(0x1381, 0), 0);
     }
+    // The full check still runs at 0xA5: an empty mapping of an active
+    // SRDO passes each write and fails there.
+    assert_eq!(
+        check_after(&mut net.p, &[(0x1381, 0, 0, 1), (0x1301, 1, 1, 1)]),
+        refused(CopKernel::SrdoErrorMapp, 0x0800_0020)
+    );
     // Back to the original mapping: valid again.
     assert_eq!(
         remap(

@@ -83,10 +83,13 @@ class HeartbeatConsumer(PeerTestCase):
         self.assertGreaterEqual(time.monotonic() - t0, (CONSUMER_MS - PRODUCER_MS) / 1000.0 * 0.9)
         time.sleep(3 * CONSUMER_MS / 1000.0)
         self.assertEqual(self.hbc_events(), [])
+        # a lost node reads "disconnected" (0x01), not its last state
+        self.assertEqual(self.peer.hbc_node_state(PRODUCER_ID), 0x01)
 
-        # back again: connected
+        # back again: connected, with the state its heartbeat carries
         self.producer.nmt.start_heartbeat(PRODUCER_MS)
         self.wait_hbc(HBC_CONNECTED)
+        self.wait_until(lambda: self.peer.hbc_node_state(PRODUCER_ID) == 0x05, what="state 0x05 again")
 
     def test_supervision_defined_by_the_application(self):
         """CcmHbcDefineProducerTab writes 0x1016 (checked over SDO by

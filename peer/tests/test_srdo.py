@@ -207,12 +207,16 @@ class Configuration(SrdoTestCase):
         self.configure(1, 50, 20, COB1, COB2, TX_MAPPING)
         # COB-ID and mapping only while the SRDO is disabled (direction 0):
         # abort 0x06090030 (SAFETY_BEHAVIOUR 2 leaves 0x06090030 or 0x08000022 to the library)
-        for index, sub, value in ((SRDO, 5, 0x111), (SRDO, 6, 0x112), (0x1381, 1, 0x20300108), (0x1381, 0, 2)):
+        for index, sub, value in ((SRDO, 5, 0x111), (SRDO, 6, 0x112), (0x1381, 1, 0x20310108), (0x1381, 0, 2)):
             with self.subTest(object=f"0x{index:04X}/{sub}"):
                 with self.assertRaises(canopen.SdoAbortedError) as cm:
                     self.node.sdo[index][sub].raw = value
                 self.assertEqual(cm.exception.code, 0x06090030)
         self.assertEqual(self.node.sdo[SRDO][5].raw, COB1)
+        # the value in force is no change (manual 1.1.1): accepted
+        self.node.sdo[SRDO][5].raw = COB1
+        self.node.sdo[0x1381][1].raw = TX_MAPPING[0]
+        self.assertEqual(self.node.sdo[0x13FE].raw, 0x00)
         # direction other than 0, 1, 2
         with self.assertRaises(canopen.SdoAbortedError) as cm:
             self.node.sdo[SRDO][1].raw = 3
@@ -223,6 +227,28 @@ class Configuration(SrdoTestCase):
             self.node.sdo[SRDO][4].raw = 253
         self.assertEqual(cm.exception.code, 0x06010002)
         self.assertEqual(self.node.sdo[SRDO][4].raw, 254)
+
+    def test_mapping_writes_are_checked_at_once(self):
+        """Manual 2.5: each mapping write is checked; the abort names the reason
+        (CiA 301 table 22), nothing is stored."""
+        self.configure(1, 50, 20, COB1, COB2, TX_MAPPING)
+        self.node.sdo[SRDO][1].raw = 0
+        self.node.sdo[0x1381][0].raw = 0
+        for sub, value, code in (
+            (1, 0x30000110, 0x06020000),  # object does not exist
+            (1, 0x20300908, 0x06090011),  # subindex does not exist
+            (1, 0x13010210, 0x06040041),  # SCT: cannot be mapped
+        ):
+            with self.subTest(entry=f"0x{value:08X}"):
+                with self.assertRaises(canopen.SdoAbortedError) as cm:
+                    self.node.sdo[0x1381][sub].raw = value
+                self.assertEqual(cm.exception.code, code)
+                self.assertEqual(self.node.sdo[0x1381][sub].raw, TX_MAPPING[sub - 1])
+        with self.assertRaises(canopen.SdoAbortedError) as cm:
+            self.node.sdo[0x1381][0].raw = 3  # an odd count
+        self.assertEqual(cm.exception.code, 0x06040043)
+        self.assertEqual(self.node.sdo[0x1381][0].raw, 0)
+        self.node.sdo[0x1381][0].raw = 4
 
 
 class Receive(SrdoTestCase):

@@ -404,7 +404,8 @@ pub unsafe extern "C" fn CcmSendEmergency(
 }
 
 /// `CcmDefineVarTab`: attaches application variables to USERDEF / DOMAIN
-/// objects (their `tObdVarEntry`). kCopInvalidParam for NULL,
+/// objects (their `tObdVarEntry`). kCopInvalidParam for NULL (the table,
+/// or an `m_pData` of NULL with kVarValidData: then no entry is taken),
 /// kCopObdIndexNotExist / kCopObdSubindexNotExist, kCopObdVarEntryNotExist
 /// when the object is not a USERDEF/DOMAIN object, kCopObdValueLengthError
 /// when the size does not fit the object's type. Entries before a failing
@@ -422,6 +423,14 @@ pub unsafe extern "C" fn CcmDefineVarTab(
     instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (wNumOfVars_p entries; NULL refused).
     let tab = c_try!(unsafe { ptr::slice(pVarTab_p, usize::from(wNumOfVars_p)) });
+    // A NULL variable is refused before anything changes (README, API
+    // conventions: NULL pointers give kCopInvalidParam).
+    if tab
+        .iter()
+        .any(|v| v.m_bValidFlag & var_valid::DATA != 0 && v.m_pData.is_null())
+    {
+        return CopKernel::InvalidParam.code();
+    }
     code(global::with(|i| {
         for v in tab {
             define_var(i.stack.od(), v)?;

@@ -314,7 +314,8 @@ pub unsafe extern "C" fn CcmHbcDefineProducerTab(
     }))
 }
 
-/// `CcmHbcGetNodeState`: the last NMT state a supervised node reported.
+/// `CcmHbcGetNodeState`: the last NMT state a supervised node reported;
+/// 0x01 ("disconnected") from a heartbeat loss until its next heartbeat.
 /// kCopInvalidParam (NULL), kCopHbcEntryNotExist (node not supervised or
 /// not heard yet).
 ///
@@ -341,8 +342,11 @@ pub unsafe extern "C" fn CcmHbcGetNodeState(
 /// valid flags select the fields taken (kSdocValidFlagRxCanId 0x01,
 /// TxCanId 0x02, ServerNodeId 0x04, TimeOut 0x08); a node-ID without
 /// COB-IDs gives the predefined connection set (0x600 / 0x580 + node-ID).
+/// A transfer running on a channel defined again ends as `CcmSdocAbort`
+/// ends it (abort frame with SDOAC_GENERAL_ERROR to the old server; its
+/// finish callback is called before this function returns).
 /// kCopInvalidParam (NULL), kCopSdocClientNotExist (index outside
-/// 0x1280.. + `SDO_MAX_CLIENT_IN_OBD`), kCopSdocInvalidParam, kCopSdocBusy.
+/// 0x1280.. + `SDO_MAX_CLIENT_IN_OBD`), kCopSdocInvalidParam.
 ///
 /// # Safety
 /// `pClientTab_p` must be valid for `bNumOfClients_p` entries.
@@ -355,7 +359,7 @@ pub unsafe extern "C" fn CcmSdocDefineClientTab(
     instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (bNumOfClients_p entries).
     let tab = c_try!(unsafe { ptr::slice_or_empty(pClientTab_p, usize::from(bNumOfClients_p)) });
-    code(global::with(|i| {
+    let r = global::with(|i| {
         for p in tab {
             let mut cp = i.stack.sdoc().param(p.m_wClientIndex).unwrap_or_default();
             if cp == crate::sdo::client::ClientParam::default() {
@@ -391,7 +395,10 @@ pub unsafe extern "C" fn CcmSdocDefineClientTab(
             }
         }
         Ok(())
-    }))
+    });
+    // The finish callback of a transfer the new definition ended.
+    global::pump(|i, now| i.stack.drain(&mut i.port, now));
+    code(r)
 }
 
 /// `CcmSdocStartTransfer`: starts an upload (kSdocTypeSegUp), a download

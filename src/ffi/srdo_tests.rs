@@ -510,8 +510,17 @@ fn mapping(node: &Node) {
             at(&producer::INVERTED, 2)
         ]
     );
-    // A mapping entry naming an absent object: a NULL pointer for it.
-    assert_eq!(node.write(0x1382, 1, &0x6400_0110u32.to_ne_bytes()), 0);
+    // A mapping entry naming an absent object: a NULL pointer for it. A
+    // write of it is refused (manual 2.5, checked at each change), so it is
+    // placed as a dictionary default naming a missing object would be.
+    assert_eq!(
+        node.write(0x1382, 1, &0x6400_0110u32.to_ne_bytes()),
+        CopKernel::SrdoErrorMapp.code()
+    );
+    assert_eq!(
+        global::with(|i| i.stack.od().poke_uint(0x1382, 1, 0x6400_0110)),
+        Ok(Ok(()))
+    );
     let mut c = tSrdoCommuParam {
         m_bDirection: 0xEE,
         m_wSct: 0xEEEE,

@@ -4,7 +4,8 @@
 //! entry with node-ID 0 or time 0 is unused. Supervision of a node starts
 //! with its first heartbeat (CiA 301); when the time passes without a new
 //! one the node is reported lost once, and connected again with its next
-//! heartbeat.
+//! heartbeat. From the loss until that heartbeat (or boot-up) the node's
+//! state reads [`NODE_STATE_DISCONNECTED`], not the last state it reported.
 
 use crate::event::{ActionQueue, ErrCtrlEvent, Event};
 use crate::nmt::Supervision;
@@ -14,6 +15,13 @@ use crate::wire::nmt::ErrorControl;
 
 /// Consumer heartbeat time object.
 pub const CONSUMER_TIME_INDEX: u16 = 0x1016;
+
+/// The node state of a producer whose heartbeat was lost: 0x01,
+/// "disconnected" among the node states of DS 301 v3 node guarding, which
+/// no heartbeat carries (CiA 301 7.2.8.3.2 knows 0x00, 0x04, 0x05, 0x7F),
+/// so a master that only polls the state tells a lost node from a working
+/// one.
+pub const NODE_STATE_DISCONNECTED: u8 = 0x01;
 
 /// Capacity: `HBC_MAX_CONSUMER_IN_OBD`.
 pub const CAPACITY: usize = crate::config::HBC_MAX_CONSUMER_IN_OBD;
@@ -89,7 +97,8 @@ impl HeartbeatConsumer {
         }
     }
 
-    /// The last state a node reported, if it is supervised and was heard.
+    /// The last state a node reported, if it is supervised and was heard;
+    /// [`NODE_STATE_DISCONNECTED`] from the loss of its heartbeat on.
     pub fn node_state(&self, node: u8) -> Option<u8> {
         self.entries
             .iter()
@@ -138,6 +147,7 @@ impl HeartbeatConsumer {
         for e in self.entries.iter_mut() {
             if e.expired(now) {
                 e.supervision = Supervision::Lost;
+                e.state = Some(NODE_STATE_DISCONNECTED);
                 q.emit(Event::Hbc(e.node, ErrCtrlEvent::HbcConnectionLost));
                 return false;
             }
@@ -178,6 +188,27 @@ mod tests {
         c.on_heartbeat(hb(5, 0x7F), Ticks(5500), &mut q);
         assert_eq!(q.pop(), hbc(5, ErrCtrlEvent::HbcNodeStateChanged));
         assert_eq!(c.node_state(5), Some(0x7F));
+    }
+
+    #[test]
+    fn a_lost_node_reads_disconnected_until_it_is_heard_again() {
+        let mut c = HeartbeatConsumer::new();
+        assert!(c.define(0, 7, 50));
+        let mut q = ActionQueue::new();
+        c.on_heartbeat(hb(7, 0x05), Ticks(0), &mut q);
+        assert_eq!(q.pop(), hbc(7, ErrCtrlEvent::HbcConnected));
+        assert_eq!(c.node_state(7), Some(0x05));
+        assert!(!c.poll(Ticks(501), &mut q));
+        assert_eq!(q.pop(), hbc(7, ErrCtrlEvent::HbcConnectionLost));
+        assert_eq!(c.node_state(7), Some(NODE_STATE_DISCONNECTED));
+        assert!(c.poll(Ticks(9000), &mut q));
+        assert_eq!(c.node_state(7), Some(NODE_STATE_DISCONNECTED));
+        // A boot-up (state 0x00, CiA 301 7.2.8.3.3) ends it as a heartbeat
+        // does, with a connection event and no state change event.
+        c.on_heartbeat(hb(7, 0x00), Ticks(9000), &mut q);
+        assert_eq!(q.pop(), hbc(7, ErrCtrlEvent::HbcConnected));
+        assert!(q.is_empty());
+        assert_eq!(c.node_state(7), Some(0x00));
     }
 
     #[test]

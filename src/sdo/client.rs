@@ -231,12 +231,22 @@ impl SdoClient {
         }
     }
 
-    /// Defines or updates a channel (`CcmSdocDefineClientTab`). Changing a
-    /// channel with a running transfer gives kCopSdocBusy; an index outside
-    /// 0x1280.. + capacity kCopSdocClientNotExist; COB-IDs above 11 bits
-    /// (without bit 29) or identifiers of another service
-    /// ([`super::usable_cob_id`]) kCopSdocInvalidParam.
-    pub fn define(&mut self, index: u16, p: ClientParam) -> CopResult {
+    /// Defines or updates a channel (`CcmSdocDefineClientTab`). A transfer
+    /// running on the channel ends first as [`SdoClient::abort`] ends it,
+    /// with 0x08000000 (general error) on the old definition's COB-ID and
+    /// `SdocFinished` queued: a master that gives up on a server before the
+    /// client's timeout may define the channel again and start anew. An
+    /// index outside 0x1280.. + capacity gives kCopSdocClientNotExist;
+    /// COB-IDs above 11 bits (without bit 29) or identifiers of another
+    /// service ([`super::usable_cob_id`]) kCopSdocInvalidParam, and then
+    /// nothing changes, a running transfer included.
+    pub fn define(
+        &mut self,
+        port: &mut impl CanPort,
+        index: u16,
+        p: ClientParam,
+        q: &mut ActionQueue,
+    ) -> CopResult {
         for cob in [p.tx_cob, p.rx_cob] {
             if cob & 0x8000_0000 == 0 && cob & 0x2000_0000 == 0 && cob > 0x7FF
                 || !super::usable_cob_id(cob)
@@ -251,8 +261,8 @@ impl SdoClient {
             .channels
             .get_mut(Self::slot(index)?)
             .ok_or(CopKernel::SdocClientNotExist)?;
-        if c.transfer.is_some() {
-            return Err(CopKernel::SdocBusy);
+        if let Some(t) = c.transfer {
+            finish_tx_abort(c, port, index, t.mux, SdoAbort::General.code(), q);
         }
         c.defined = true;
         c.param = p;

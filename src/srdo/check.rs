@@ -36,7 +36,7 @@ use super::{
     commu_index_of, crc, read_u8, read_u16, read_u32,
 };
 use crate::config::{SRDO_GRANULARITY, SRDO_MAX_MAPPENTRIES, SRDO_USE_DUMMY_MAPPING};
-use crate::error::CopKernel;
+use crate::error::{CopKernel, OdError, SdoAbort};
 use crate::od::ObjectDictionary;
 use crate::wire::srdo::{COB_ID_COUNT, COB_ID_MIN, MAX_DATA, SrdoCobIds};
 
@@ -64,18 +64,67 @@ impl Params {
     }
 }
 
+/// Why a mapping does not hold: the check's kernel code and, for a write
+/// that would make it so, the CiA 301 abort code naming the reason
+/// (CiA 301 table 22).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum MapFault {
+    /// The mapped index does not exist: 0x06020000.
+    NoObject,
+    /// The mapped subindex does not exist: 0x06090011.
+    NoSubindex,
+    /// Not mappable, wrong access for the direction, not of the mapped
+    /// length, no variable, or a dummy entry where none is allowed:
+    /// 0x06040041.
+    NotMappable,
+    /// An odd count or a pair of unequal length: 0x06040043.
+    Pairing,
+    /// More entries than an SRDO holds: 0x06040042.
+    Count,
+    /// More than 8 bytes of normal data (`kCopSrdoLengthExceeded`):
+    /// 0x06040042.
+    Length,
+    /// An entry that is not a multiple of the granularity
+    /// (`kCopSrdoGranularityMismatch`): 0x06040043.
+    Granularity,
+}
+
+impl MapFault {
+    /// The `tCopKernel` code (that of the configuration check).
+    pub(crate) fn kernel(self) -> CopKernel {
+        match self {
+            MapFault::Length => CopKernel::SrdoLengthExceeded,
+            MapFault::Granularity => CopKernel::SrdoGranularityMismatch,
+            _ => CopKernel::SrdoErrorMapp,
+        }
+    }
+
+    /// The kernel code with the SDO abort code of a refused write.
+    pub(crate) fn refusal(self) -> OdError {
+        let abort = match self {
+            MapFault::NoObject => SdoAbort::ObjectNotExist,
+            MapFault::NoSubindex => SdoAbort::SubindexNotExist,
+            MapFault::NotMappable => SdoAbort::NotMappable,
+            MapFault::Pairing | MapFault::Granularity => SdoAbort::ParamIncompatible,
+            MapFault::Count | MapFault::Length => SdoAbort::PdoLengthExceeded,
+        };
+        OdError::new(self.kernel(), abort)
+    }
+}
+
 /// Checks the object one mapping entry names (or the dummy entry).
+/// `Direction::Off` accepts an object that fits either direction.
 fn check_object(
     od: &ObjectDictionary,
     entry: MappingEntry,
     direction: Direction,
-) -> Result<(), CopKernel> {
-    let bad = CopKernel::SrdoErrorMapp;
+) -> Result<(), MapFault> {
+    let bad = MapFault::NotMappable;
     if let Some(bits) = entry.dummy_bits() {
         // CiA 301 dummy entries: the data type entries 0x0001..0x0007, sub 0,
         // mapped with the size of their type; receive side only.
         return if SRDO_USE_DUMMY_MAPPING
-            && direction == Direction::Receive
+            && direction != Direction::Transmit
             && entry.sub == 0
             && bits == entry.bits
         {
@@ -84,7 +133,13 @@ fn check_object(
             Err(bad)
         };
     }
-    let obj = od.find(entry.index, entry.sub).map_err(|_| bad)?;
+    let obj = od.find(entry.index, entry.sub).map_err(|e| {
+        if e == OdError::INDEX {
+            MapFault::NoObject
+        } else {
+            MapFault::NoSubindex
+        }
+    })?;
     let typ = obj.data_type();
     let wire = match typ.encoding() {
         crate::od::Encoding::Numeric { wire, .. } => wire,
@@ -97,7 +152,7 @@ fn check_object(
     let access_ok = match direction {
         Direction::Transmit => access.readable(),
         Direction::Receive => access.writable(),
-        Direction::Off => false,
+        Direction::Off => access.readable() || access.writable(),
     };
     if !access_ok {
         return Err(bad);
@@ -111,6 +166,51 @@ fn check_object(
     Ok(())
 }
 
+/// Checks the first `count` entries of an SRDO's mapping for `direction`;
+/// returns the normal data length in bytes. A count of 0 passes here (the
+/// configuration check refuses it for an active SRDO).
+fn check_entries(
+    od: &ObjectDictionary,
+    mapp_index: u16,
+    count: u8,
+    direction: Direction,
+    granularity: u8,
+) -> Result<u8, MapFault> {
+    if usize::from(count) > SRDO_MAX_MAPPENTRIES {
+        return Err(MapFault::Count);
+    }
+    if count % 2 != 0 {
+        return Err(MapFault::Pairing);
+    }
+    // An empty entry (0) inside the count maps nothing: not mappable.
+    let entry = |sub: u8| match read_u32(od, mapp_index, sub) {
+        Some(0) => Err(MapFault::NotMappable),
+        Some(raw) => Ok(MappingEntry::decode(raw)),
+        None => Err(MapFault::Count),
+    };
+    let mut normal_bits = 0u32;
+    let mut granular = true;
+    for pair in 0..count / 2 {
+        let sub = 2 * pair + 1;
+        let normal = entry(sub)?;
+        let inverted = entry(sub + 1)?;
+        check_object(od, normal, direction)?;
+        check_object(od, inverted, direction)?;
+        if normal.bits != inverted.bits || normal.bits == 0 {
+            return Err(MapFault::Pairing);
+        }
+        normal_bits += u32::from(normal.bits);
+        granular &= u32::from(normal.bits) % u32::from(granularity.max(1)) == 0;
+    }
+    if normal_bits > 8 * MAX_DATA as u32 {
+        return Err(MapFault::Length);
+    }
+    if !granular {
+        return Err(MapFault::Granularity);
+    }
+    Ok((normal_bits / 8) as u8)
+}
+
 /// Checks the mapping of an active SRDO; returns the normal data length.
 pub(super) fn check_mapping(
     od: &ObjectDictionary,
@@ -119,32 +219,63 @@ pub(super) fn check_mapping(
     granularity: u8,
 ) -> Result<u8, CopKernel> {
     let mapp_index = commu_index + MAPP_OFFSET;
-    let bad = CopKernel::SrdoErrorMapp;
-    let count = read_u8(od, mapp_index, 0).ok_or(bad)?;
-    if count == 0 || count % 2 != 0 || usize::from(count) > SRDO_MAX_MAPPENTRIES {
-        return Err(bad);
+    let count = read_u8(od, mapp_index, 0).ok_or(CopKernel::SrdoErrorMapp)?;
+    if count == 0 {
+        return Err(CopKernel::SrdoErrorMapp);
     }
-    let mut normal_bits = 0u32;
-    let mut granular = true;
-    for pair in 0..count / 2 {
-        let sub = 2 * pair + 1;
-        let normal = MappingEntry::decode(read_u32(od, mapp_index, sub).ok_or(bad)?);
-        let inverted = MappingEntry::decode(read_u32(od, mapp_index, sub + 1).ok_or(bad)?);
-        if normal.bits != inverted.bits || normal.bits == 0 {
-            return Err(bad);
-        }
-        check_object(od, normal, direction)?;
-        check_object(od, inverted, direction)?;
-        normal_bits += u32::from(normal.bits);
-        granular &= u32::from(normal.bits) % u32::from(granularity.max(1)) == 0;
+    check_entries(od, mapp_index, count, direction, granularity).map_err(MapFault::kernel)
+}
+
+/// The check of one write to the mapping of the SRDO `commu_index` while
+/// its direction is 0 (manual 2.5: the mapping is checked at each change).
+/// Sub 0 := n checks the n entries it enables as the configuration check
+/// does; an entry (sub 1..) is checked on its own, since the normal and
+/// inverted entries of a pair are written one after the other (0 empties
+/// it). The direction the objects' access must fit is the one the
+/// dictionary declares for the SRDO (the default of sub 1); an SRDO
+/// declared with direction 0 accepts objects of either direction, and the
+/// configuration check at 0xA5 judges the direction in force.
+pub(crate) fn mapping_write(
+    od: &ObjectDictionary,
+    commu_index: u16,
+    sub: u8,
+    v: u64,
+    granularity: u8,
+) -> Result<(), OdError> {
+    let direction = declared_direction(od, commu_index);
+    let mapp_index = commu_index + MAPP_OFFSET;
+    if sub == 0 {
+        let present = od
+            .find_entry(mapp_index)
+            .map_or(0, |e| od.sub_count(e).saturating_sub(1));
+        let count = u8::try_from(v)
+            .ok()
+            .filter(|n| usize::from(*n) <= present)
+            .ok_or(MapFault::Count.refusal())?;
+        return check_entries(od, mapp_index, count, direction, granularity)
+            .map(|_| ())
+            .map_err(MapFault::refusal);
     }
-    if normal_bits > 8 * MAX_DATA as u32 {
-        return Err(CopKernel::SrdoLengthExceeded);
+    if v == 0 {
+        return Ok(());
     }
-    if !granular {
-        return Err(CopKernel::SrdoGranularityMismatch);
+    let entry = MappingEntry::decode(v as u32);
+    check_object(od, entry, direction).map_err(MapFault::refusal)?;
+    if u32::from(entry.bits) % u32::from(granularity.max(1)) != 0 {
+        return Err(MapFault::Granularity.refusal());
     }
-    Ok((normal_bits / 8) as u8)
+    Ok(())
+}
+
+/// The direction `OBD_CREATE_SRDO_COMMU` gave the SRDO (the default of sub
+/// 1); `Direction::Off` when it has none or declares 0.
+fn declared_direction(od: &ObjectDictionary, commu_index: u16) -> Direction {
+    od.find(commu_index, 1)
+        .ok()
+        .and_then(|o| o.desc().default_value())
+        .and_then(|d| d.first().copied())
+        .and_then(Direction::from_u8)
+        .unwrap_or(Direction::Off)
 }
 
 impl Srdo {

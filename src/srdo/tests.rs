@@ -924,6 +924,174 @@ mod dynamic {
         assert_eq!(srdo.check_config_with(&od, 8), Ok(()));
     }
 
+    /// A write hook's verdict: the kernel code and the SDO abort code.
+    type Verdict = Result<(), (CopKernel, u32)>;
+
+    /// What the write hook gives for 8-bit entries: accepted at the
+    /// granularity of 8 bits, else `kCopSrdoGranularityMismatch` with
+    /// 0x06040043 (general parameter incompatibility, CiA 301 table 22).
+    fn byte_entries() -> Verdict {
+        if SRDO_GRANULARITY == 8 {
+            Ok(())
+        } else {
+            Err((CopKernel::SrdoGranularityMismatch, 0x0604_0043))
+        }
+    }
+
+    /// The result of the write hook for `index`/`sub` := `v`, as the
+    /// kernel code and the CiA 301 abort code an SDO client receives.
+    fn hook(od: &ObjectDictionary, srdo: &Srdo, index: u16, sub: u8, v: u64) -> Verdict {
+        let obj = od.find(index, sub).unwrap();
+        let len = obj.data_type().wire_size().unwrap();
+        let bytes = v.to_le_bytes();
+        let staged = od
+            .stage(&obj, crate::od::ByteOrder::Wire, &bytes[..len])
+            .unwrap();
+        srdo.check_write(od, &obj, &staged, NmtState::PreOperational)
+            .map_err(|e| (e.kernel, e.abort))
+    }
+
+    // A receive SRDO as `OBD_CREATE_SRDO_COMMU(0x1301, 1, 2, ...)` declares
+    // it, with an empty mapping.
+    crate::obd_create_srdo_commu!(mod rx1, 0x1301, 2, 25, 20, 0x101, 0x102);
+    crate::obd_create_srdo_mapp!(mod rx1_mapp, 0x1381, []);
+    crate::obd_create_srdo_cfg_valid!(mod rx_cfg_valid);
+    crate::obd_create_srdo_crc!(mod rx_crcs, [0]);
+    static RECEIVE: [ObdEntry; 4] = crate::srdo_obd_entries![rx1, rx1_mapp, rx_cfg_valid, rx_crcs];
+
+    /// Manual 2.5: "Das SRDO Modul überprüft bei jeder Änderung des Mappings
+    /// die gewählten Parameter": each entry written (while the direction is
+    /// 0, the CiA 304 procedure) is checked at once against the object it
+    /// names, with the CiA 301 abort codes of 7.5.2.36 / table 22
+    /// (0x06020000 object does not exist, 0x06090011 subindex does not
+    /// exist, 0x06040041 object cannot be mapped, 0x06040043 general
+    /// parameter incompatibility).
+    // req: SB-2-MAPPING-WRITE
+    #[test]
+    fn each_mapping_entry_is_checked_when_it_is_written() {
+        use core::sync::atomic::Ordering::Relaxed;
+        let (_g, od, srdo) = setup_with(&RECEIVE);
+        assert_eq!(get(&od, 0x1301, 1), 2, "declared receive");
+        set(&od, 0x1301, 1, 0);
+        let bad = CopKernel::SrdoErrorMapp;
+        E6600_1.m_pData.store(core::ptr::null_mut(), Relaxed);
+        let byte = byte_entries();
+        let cases: &[(u32, Verdict)] = &[
+            (0x3000_0110, Err((bad, 0x0602_0000))), // no object 0x3000
+            (0x6200_0908, Err((bad, 0x0609_0011))), // 0x6200 has no sub 9
+            (0x6400_0110, Err((bad, 0x0604_0041))), // read-only, receive SRDO
+            (0x6400_0210, Err((bad, 0x0604_0041))), // not mappable
+            (0x6200_0110, Err((bad, 0x0604_0041))), // U8 mapped as 16 bits
+            (0x6600_0120, Err((bad, 0x0604_0041))), // no variable attached
+            (0x1301_0208, Err((bad, 0x0604_0041))), // SCT: not mappable
+            (0x6200_0108, byte),
+            (0x6400_0320, Ok(())),
+            (0, Ok(())), // an empty entry
+        ];
+        for &(entry, expected) in cases {
+            for sub in [1u8, 2] {
+                let before = get(&od, 0x1381, sub);
+                let r = hook(&od, &srdo, 0x1381, sub, u64::from(entry));
+                assert_eq!(r, expected, "sub {sub} = {entry:#010x}");
+                assert_eq!(get(&od, 0x1381, sub), before, "the hook only judges");
+            }
+        }
+        // With its variable attached 0x6600 sub 1 may be mapped.
+        assert!(E6600_1.attach(&FIT_N));
+        assert_eq!(hook(&od, &srdo, 0x1381, 1, 0x6600_0120), Ok(()));
+        E6600_1.m_pData.store(core::ptr::null_mut(), Relaxed);
+        // A transmit SRDO may map the read-only object, and an SRDO
+        // declared with direction 0 either kind (the check at 0xA5 judges
+        // the direction in force).
+        let (_g2, od, srdo) = {
+            drop(_g);
+            setup()
+        };
+        assert_eq!(get(&od, 0x1301, 1), 0, "declared off");
+        assert_eq!(hook(&od, &srdo, 0x1381, 1, 0x6400_0110), Ok(()));
+        assert_eq!(hook(&od, &srdo, 0x1381, 1, 0x6201_0210), Ok(()));
+        assert_eq!(
+            hook(&od, &srdo, 0x1381, 1, 0x6400_0210),
+            Err((bad, 0x0604_0041))
+        );
+    }
+
+    /// Sub 0 = n enables the n entries written before (while sub 0 was 0):
+    /// an even count, pairs of equal length, every entry as above, at most
+    /// 8 bytes of normal data (CiA 304; abort 0x06040042 "number and
+    /// length of the objects to be mapped would exceed the PDO length",
+    /// CiA 301 table 22) and each entry a multiple of the granularity.
+    // req: SB-2-MAPPING-WRITE
+    #[test]
+    fn the_mapping_count_checks_the_entries_it_enables() {
+        let (_g, od, srdo) = setup_with(&RECEIVE);
+        set(&od, 0x1301, 1, 0);
+        let put = |entries: &[u32]| {
+            for (i, e) in entries.iter().enumerate() {
+                set(&od, 0x1381, (i + 1) as u8, u64::from(*e));
+            }
+        };
+        let bad = CopKernel::SrdoErrorMapp;
+        put(&[0x6200_0108, 0x6300_0108, 0x6201_0110, 0x6300_0208]);
+        assert_eq!(hook(&od, &srdo, 0x1381, 0, 0), Ok(()));
+        assert_eq!(hook(&od, &srdo, 0x1381, 0, 2), byte_entries());
+        assert_eq!(hook(&od, &srdo, 0x1381, 0, 3), Err((bad, 0x0604_0043)));
+        assert_eq!(
+            hook(&od, &srdo, 0x1381, 0, 4),
+            Err((bad, 0x0604_0043)),
+            "16 bits paired with 8 bits"
+        );
+        put(&[0x6200_0108, 0x3000_0108]);
+        assert_eq!(hook(&od, &srdo, 0x1381, 0, 2), Err((bad, 0x0602_0000)));
+        put(&[0x6200_0108, 0x6400_0108]);
+        assert_eq!(hook(&od, &srdo, 0x1381, 0, 2), Err((bad, 0x0604_0041)));
+        // Three pairs of 32 bits: 12 bytes of normal data.
+        put(&[
+            0x6400_0320,
+            0x6400_0420,
+            0x6400_0320,
+            0x6400_0420,
+            0x6400_0320,
+            0x6400_0420,
+        ]);
+        assert_eq!(hook(&od, &srdo, 0x1381, 0, 4), Ok(()));
+        assert_eq!(
+            hook(&od, &srdo, 0x1381, 0, 6),
+            Err((CopKernel::SrdoLengthExceeded, 0x0604_0042))
+        );
+        let max = crate::config::SRDO_MAX_MAPPENTRIES as u64;
+        assert_eq!(
+            hook(&od, &srdo, 0x1381, 0, max + 2),
+            Err((bad, 0x0604_0042))
+        );
+        // Granularity (manual 2.4): 8-bit entries at 16 bits.
+        put(&[0x6200_0108, 0x6300_0108]);
+        assert_eq!(
+            super::super::check::mapping_write(&od, 0x1301, 0, 2, 16)
+                .map_err(|e| (e.kernel, e.abort)),
+            Err((CopKernel::SrdoGranularityMismatch, 0x0604_0043))
+        );
+        assert_eq!(
+            super::super::check::mapping_write(&od, 0x1301, 1, 0x6200_0108, 16)
+                .map_err(|e| (e.kernel, e.abort)),
+            Err((CopKernel::SrdoGranularityMismatch, 0x0604_0043))
+        );
+        assert_eq!(
+            super::super::check::mapping_write(&od, 0x1301, 0, 2, 8)
+                .map_err(|e| (e.kernel, e.abort)),
+            Ok(())
+        );
+        // The full check still runs when 0xA5 is written.
+        set(&od, 0x1381, 0, 2);
+        set(&od, 0x1381, 2, 0x3000_0108);
+        set(&od, 0x1301, 1, 2);
+        seal(&od, &srdo);
+        assert_eq!(
+            srdo.check_config(&od),
+            Err((CopKernel::SrdoErrorMapp, 0x1301))
+        );
+    }
+
     #[test]
     fn mapp_param_reports_the_variables() {
         let (_g, od, srdo) = setup_receiving();

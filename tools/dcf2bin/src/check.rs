@@ -509,7 +509,10 @@ pub fn check_and_export(
     }
     // A created object takes the file's value as its default without the
     // stack's write rules (0x1029 sub 1 = 0x80, for example); say where a
-    // write of the same value would be refused.
+    // write of the same value would be refused. A refusal for the state
+    // the object is in (abort 0x08000022: a mapping entry or count of a
+    // valid PDO, CiA 301 7.5.2.36) is the write procedure's, not the
+    // value's: the build follows that procedure, so it is no note.
     for (o, ex) in dcf.objects.iter().zip(&existed) {
         let writable = stack
             .od()
@@ -519,7 +522,11 @@ pub fn check_and_export(
             continue;
         }
         let now = bus.now();
-        if let Err(e) = stack.write_object(o.index, o.sub, ByteOrder::Wire, &o.data, now) {
+        let refused = stack
+            .write_object(o.index, o.sub, ByteOrder::Wire, &o.data, now)
+            .err()
+            .filter(|e| e.abort != cop::error::SdoAbort::DeviceState.code());
+        if let Some(e) = refused {
             r.lines.push(format!(
                 "  note: {}:{}: [{}] 0x{:04X} sub {} is created with {}, which the stack refuses on a write ({}): the node runs with it as a default (README, Behaviour decisions)",
                 dcf.file.display(),

@@ -49,6 +49,9 @@ OPTIONS:
                          every SRDO the file configures, the stored value
                          and the pairs of its mapping, and run the
                          library's SRDO configuration check on the file
+                         (exit status 1 when the file declares the
+                         configuration valid, 0x13FE = 0xA5, and a stored
+                         0x13FF value is not the CRC)
         --write          with --srdo-crc: store the CRCs in the file
                          (0x13FF sub n ParameterValue)
         --verify <BIN>   check a container (from any tool): what DynBuildOd
@@ -439,8 +442,30 @@ fn run(a: &Args) -> Result<bool, String> {
                 dcf2bin::safety::write_crcs(&text, &a.input, &crcs).map_err(|e| e.to_string())?;
             dcf2bin::write_atomically(&a.input, updated.as_bytes())
                 .map_err(|e| format!("{}: {e}", a.input.display()))?;
+            return Ok(true);
         }
-        return Ok(true);
+        // A file that declares its configuration valid (0x13FE = 0xA5) must
+        // hold the CRCs of it: a node would refuse it (kCopSrdoCfgCrcError).
+        let declared_valid = dcf
+            .get(0x13FE, 0)
+            .is_some_and(|o| o.data.first() == Some(&0xA5));
+        let mut agree = true;
+        for r in reports.iter().filter(|_| declared_valid) {
+            let stored = match r.stored {
+                Some(s) if s == r.crc => continue,
+                Some(s) => format!("is 0x{s:04X}"),
+                None => "has no value".to_string(),
+            };
+            eprintln!(
+                "dcf2bin: {}: 0x13FE = 0xA5 declares the configuration valid, but 0x13FF sub {} {stored}, not the CRC 0x{:04X} of SRDO {} (--write stores the CRCs)",
+                a.input.display(),
+                r.n,
+                r.crc,
+                r.n
+            );
+            agree = false;
+        }
+        return Ok(agree);
     }
     if a.dump {
         for o in &dcf.objects {

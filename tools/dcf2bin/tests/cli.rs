@@ -157,6 +157,48 @@ fn srdo_crcs_of_the_public_vectors() {
     assert_eq!(cop::srdo::crc::crc16(b"123456789"), 0x31C3);
 }
 
+/// `--srdo-crc` on a DCF that declares its SRDO configuration valid
+/// (0x13FE = 0xA5, SAFETY_BEHAVIOUR.md section 2) with 0x13FF values that
+/// are not the CRCs of the configuration: the node would refuse it at
+/// start (`kCopSrdoCfgCrcError`), so the tool fails, and a CI step sees it.
+#[test]
+fn a_stored_crc_that_differs_fails_when_the_file_declares_it_valid() {
+    let dir = temp_dir("crc-differs");
+    let input = dir.join("srdo.dcf");
+    let cfg_valid = |v: &str| {
+        format!(
+            "[13FE]\nParameterName=p\nObjectType=0x7\nDataType=0x0005\nAccessType=rw\nDefaultValue={v}\nPDOMapping=0\n\n"
+        )
+    };
+    let run = |body: &str, extra: &[&str]| {
+        std::fs::write(&input, body).unwrap();
+        let mut args = vec!["--srdo-crc"];
+        args.extend_from_slice(extra);
+        args.push(input.to_str().unwrap());
+        let o = dcf2bin(&args);
+        (o.status.code(), text(&o.stdout), text(&o.stderr))
+    };
+    // 0x13FF sub 1..5 hold 0 in srdo_dcf: every one differs.
+    let (code, out, err) = run(&(srdo_dcf(true) + &cfg_valid("0xA5")), &[]);
+    assert_eq!(code, Some(1), "{out}{err}");
+    assert!(out.contains("stored: 0x0000, differs"), "{out}");
+    assert!(
+        err.contains("0x13FE = 0xA5 declares the configuration valid, but 0x13FF sub 1 is 0x0000, not the CRC 0xD879"),
+        "{err}"
+    );
+    // Not declared valid: the CRCs are information, no failure.
+    let (code, out, err) = run(&(srdo_dcf(true) + &cfg_valid("0")), &[]);
+    assert_eq!(code, Some(0), "{out}{err}");
+    // With --write the file gets the CRCs, and then it agrees.
+    let (code, out, err) = run(&(srdo_dcf(true) + &cfg_valid("0xA5")), &["--write"]);
+    assert_eq!(code, Some(0), "{out}{err}");
+    let written = std::fs::read_to_string(&input).unwrap();
+    let (code, out, err) = run(&written, &[]);
+    assert_eq!(code, Some(0), "{out}{err}");
+    assert!(!out.contains("differs"), "{out}");
+    let _ = std::fs::remove_dir_all(dir);
+}
+
 #[test]
 fn srdo_crcs_are_printed_and_written_back() {
     let dir = temp_dir("crc");

@@ -383,6 +383,45 @@ fn a_refusal_outside_the_pdos_is_not_laid_on_them() {
 }
 
 #[test]
+fn a_pdo_the_file_creates_gets_no_false_note() {
+    // The node has no TPDO; the file creates TPDO 1 (valid COB-ID) and the
+    // variable it maps. The build applies the CiA 301 procedure (PDO
+    // invalid, count 0, entries, count, COB-ID: 7.5.2.36), so the PDO runs
+    // with the file's mapping; a write of a mapping entry or of the count
+    // into the valid PDO is refused by that procedure (0x08000022), not by
+    // the values, and is no reason for a note.
+    let dir = temp_dir("created-pdo");
+    let node = dir.join("node.eds");
+    std::fs::write(&node, SMALL_NODE).unwrap();
+    let f = dir.join("app.dcf");
+    let body = format!(
+        "{SMALL_NODE}\
+[1800]\nObjectType=0x9\n[1800sub0]\nDataType=0x0005\nAccessType=ro\nDefaultValue=2\n\
+[1800sub1]\nDataType=0x0007\nAccessType=rw\nDefaultValue=$NODEID+0x180\n\
+[1800sub2]\nDataType=0x0005\nAccessType=rw\nDefaultValue=255\n\
+[1A00]\nObjectType=0x9\n[1A00sub0]\nDataType=0x0005\nAccessType=rw\nDefaultValue=2\n\
+[1A00sub1]\nDataType=0x0007\nAccessType=rw\nDefaultValue=0x20000010\n\
+[1A00sub2]\nDataType=0x0007\nAccessType=rw\nDefaultValue=0x20010008\n\
+[2000]\nDataType=0x0006\nAccessType=rw\nPDOMapping=1\nDefaultValue=7\n\
+[2001]\nDataType=0x0005\nAccessType=rw\nPDOMapping=1\nDefaultValue=1\n"
+    );
+    std::fs::write(&f, body).unwrap();
+    let o = dcf2bin(&[
+        "--node-id",
+        "2",
+        "--check",
+        node.to_str().unwrap(),
+        f.to_str().unwrap(),
+    ]);
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{out}");
+    assert!(out.contains("DynBuildOd builds the container"), "{out}");
+    assert!(out.contains("created 0x1A00 (3 subindices"), "{out}");
+    assert!(!out.contains("note: "), "{out}");
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
 fn a_node_of_another_configuration_gets_its_own_build() {
     // examples_c/dynod has 2 RPDOs, 2 TPDOs, no SDO client, no bit
     // mapping: the check builds a dcf2bin for that configuration once
