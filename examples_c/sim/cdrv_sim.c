@@ -7,6 +7,9 @@
 #include <string.h>
 
 #include "cdrv_sim.h"
+#if defined(SIM_CAPTURE) && (SIM_CAPTURE != 0)
+#include "capture_sim.h"
+#endif
 
 #define SIM_STD_IDS   2048u   /* 11-bit identifiers */
 #define SIM_EXT_IDS   32u     /* 29-bit identifiers a node may define */
@@ -249,6 +252,9 @@ static int SimBus (tSimFrame* pFrame_p)
         return 0;
     }
     SimTrace(pFrame_p);
+#if defined(SIM_CAPTURE) && (SIM_CAPTURE != 0)
+    SimCaptureFrame(pFrame_p);
+#endif
     if (pFrame_p->m_bSender != SIM_EXTERNAL_NODE)
     {
         if (uSimLogCount_g == SIM_LOG_MAX)
@@ -277,6 +283,9 @@ void SimReset (void)
     fSimDropArmed_g = 0;
     dwSimDropId_g = 0;
     (void) CopSimSelectInstance(0);
+#if defined(SIM_CAPTURE) && (SIM_CAPTURE != 0)
+    SimCaptureAtReset();
+#endif
 }
 
 tCopKernel SimSelectNode (BYTE bNode_p)
