@@ -74,8 +74,9 @@ if [ "$MODE" = "--evidence" ]; then
 fi
 
 apt_install gcc-arm-none-eabi binutils-arm-none-eabi \
-    gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user valgrind
-# qemu-user provides qemu-armeb, which runs the TMS570 target programs (scripts/tms570.sh)
+    gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user valgrind tshark
+# qemu-user provides qemu-armeb, which runs the TMS570 target programs (scripts/tms570.sh);
+# tshark runs the SRDO dissector (tools/wireshark) over the captures of the simulated bus
 
 rustup component list --installed 2>/dev/null | grep -q '^rust-src' || { log "rustup: rust-src"; rustup component add rust-src; }
 rustup component list --installed 2>/dev/null | grep -q '^clippy' || { log "rustup: clippy"; rustup component add clippy; }
