@@ -2,7 +2,7 @@
 # The complete test run: everything CI checks, in one command.
 #   scripts/test.sh            all stages
 #   scripts/test.sh rust c     only the named stages
-# Stages: lint rust faults header c peer target bigendian miri fuzz bench
+# Stages: lint rust faults header c wireshark peer target bigendian miri fuzz bench
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
@@ -13,7 +13,7 @@ scripts/setup.sh
 
 STAGES=("$@")
 if [ "${#STAGES[@]}" -eq 0 ]; then
-    STAGES=(lint rust faults header c peer target bigendian miri fuzz bench)
+    STAGES=(lint rust faults header c wireshark peer target bigendian miri fuzz bench)
 fi
 
 stage() { printf '\n=== %s ===\n' "$*"; }
@@ -58,6 +58,19 @@ run_stage() {
         cmake -S . -B build -DCMAKE_BUILD_TYPE=Debug >/dev/null
         cmake --build build -j2
         ctest --test-dir build --output-on-failure -j2
+        ;;
+    wireshark)
+        # tshark with tools/wireshark/cop_srdo.lua over captures of the
+        # simulated bus: one per fault class, the C safety demo, the Rust
+        # safety examples.
+        stage "Wireshark dissector over the captures of the simulated bus"
+        caps=target/captures
+        rm -rf "$caps" && mkdir -p "$caps"
+        cargo run -q --example fault_captures -- "$caps/faults"
+        cmake -S . -B build -DCMAKE_BUILD_TYPE=Debug >/dev/null
+        cmake --build build -j2 --target safety_demo >/dev/null
+        COP_CAPTURES="$caps/faults" COP_SAFETY_DEMO=build/examples_c/safety_demo/safety_demo \
+            python3 -m unittest discover -v -s tools/wireshark -p 'test_*.py'
         ;;
     peer)
         [ -x scripts/peer.sh ] || { echo "peer tests: scripts/peer.sh missing"; exit 1; }
