@@ -7,6 +7,9 @@
 
 use crate::error::CopResult;
 
+#[cfg(feature = "embedded-can")]
+pub mod embedded;
+
 /// Stack ticks per millisecond: the SYS TEC tick is 100 µs.
 pub const TICKS_PER_MS: u32 = 10;
 
