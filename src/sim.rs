@@ -23,6 +23,7 @@ use crate::error::{CopKernel, CopResult};
 use crate::port::{CanFrame, CanPort, Clock, PortStatus, Priority, RxFrame, Ticks};
 
 pub mod capture;
+pub mod fault_captures;
 pub mod faults;
 pub mod nvram;
 pub mod srdo_net;
