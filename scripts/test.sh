@@ -45,7 +45,8 @@ run_stage() {
         CARGO_TARGET_DIR=target/embedded-can cargo test -q --features embedded-can --lib port::embedded
         CARGO_TARGET_DIR=target/embedded-can cargo run -q --example safety_sensor --features embedded-can
         CARGO_TARGET_DIR=target/embedded-can cargo run -q --example safety_actuator --features embedded-can
-        CARGO_TARGET_DIR=target/embedded-can RUSTDOCFLAGS=-Dwarnings cargo doc -q --no-deps --features embedded-can
+        RUSTDOCFLAGS=-Dwarnings cargo doc -q --no-deps
+        CARGO_TARGET_DIR=target/embedded-can RUSTDOCFLAGS=-Dwarnings cargo doc -q --no-deps --features std,embedded-can
         stage "dcf2bin (host tool; its python-canopen comparisons need scripts/setup.sh)"
         CARGO_TARGET_DIR=target/dcf2bin cargo test -q --manifest-path tools/dcf2bin/Cargo.toml
         ;;

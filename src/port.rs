@@ -3,7 +3,9 @@
 //! Every protocol module reaches the CAN controller and the time only through
 //! these traits. On a target the ffi layer implements them with the SYS TEC
 //! driver (`CdrvWriteMsg`, `CdrvReadMsg`, ...) and `TgtGetTickCount`; tests
-//! and examples use the simulated bus of [`crate::sim`].
+//! and examples use the simulated bus of `crate::sim` (host builds, feature `std`).
+//! With the feature `embedded-can`, `embedded` makes any `embedded-can`
+//! driver a [`CanPort`] and a plain tick function a [`Clock`].
 
 use crate::error::CopResult;
 

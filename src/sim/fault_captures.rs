@@ -83,7 +83,7 @@ pub struct Expected {
     pub expert: &'static str,
 }
 
-/// A capture written by [`write`].
+/// A capture written by [`write()`](fn@write).
 #[derive(Clone, Debug)]
 pub struct FaultCapture {
     /// The class.
