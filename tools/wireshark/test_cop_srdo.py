@@ -112,6 +112,33 @@ class FaultCaptures(unittest.TestCase):
         without = dissect(name)
         self.assertEqual(error_reports(without), [(first + 1, "cop_srdo.dlc")])
 
+    def dcf_with(self, tmp, values):
+        """The consumer's DCF with the subindices of 0x1301 in `values` changed."""
+        with open(os.path.join(self.dir, "consumer.dcf")) as f:
+            text = f.read()
+        for sub, value in values.items():
+            section = "[1301sub%d]" % sub
+            head, tail = text.split(section, 1)
+            tail = re.sub(r"ParameterValue=\S+", "ParameterValue=" + value, tail, count=1)
+            text = head + section + tail
+        path = os.path.join(tmp, "changed.dcf")
+        with open(path, "w") as f:
+            f.write(text)
+        return "cop_srdo.dcf:" + path
+
+    def test_srvt_and_cob_ids_come_from_the_dcf(self):
+        name = os.path.join(self.dir, "tick_wrap.pcap")
+        with tempfile.TemporaryDirectory() as tmp:
+            # SRVT 1 ms in the DCF (the preference stays 20 ms): every
+            # inverted frame is late
+            frames = dissect(name, self.dcf_with(tmp, {3: "1"}))
+            srvt = [n for n, e in error_reports(frames) if e == "cop_srdo.srvt"]
+            self.assertEqual(len(srvt), len(frames) // 2)
+            # SRDO 1 moved to 0x103/0x104 in the DCF: the frames on
+            # 0x101/0x102 belong to no SRDO any more
+            frames = dissect(name, self.dcf_with(tmp, {5: "0x103", 6: "0x104"}))
+            self.assertEqual([n for n, (_, _, f) in frames.items() if f], [])
+
     def test_limits_tighter_than_the_traffic_are_reported(self):
         # the fault-free pairs are 2 ms apart and 20 ms from pair to pair:
         # SRVT 1 ms makes every inverted frame late, SCT 19 ms every pair
