@@ -21,6 +21,7 @@ capture must show, and nothing else may be reported with error severity.
 
 import os
 import re
+import struct
 import subprocess
 import tempfile
 import unittest
@@ -178,6 +179,36 @@ def lonely_normal_frames(log):
     return lonely
 
 
+def pcap_frames(path):
+    """(seconds, identifier word, data) per record of a pcap file of link
+    type 227 (pcap format: 24-byte file header, per record 16-byte header;
+    struct can_frame: identifier word big-endian, length, 3 bytes, data)."""
+    with open(path, "rb") as f:
+        raw = f.read()
+    magic, major, minor, _, _, _, linktype = struct.unpack("<IHHiIII", raw[:24])
+    assert (magic, major, minor, linktype) == (0xA1B2C3D4, 2, 4, 227)
+    out = []
+    at = 24
+    while at < len(raw):
+        sec, usec, incl, _ = struct.unpack("<IIII", raw[at:at + 16])
+        word, length = struct.unpack(">IB", raw[at + 16:at + 21])
+        out.append((sec + usec / 1e6, word, raw[at + 24:at + 24 + length]))
+        at += 16 + incl
+    return out
+
+
+def log2asc_frames(log):
+    """(relative seconds, identifier, data) of can-utils' log2asc, which
+    reads a candump -l log with canplayer's parser."""
+    out = subprocess.run(["log2asc", "-I", log, "can0"], check=True, capture_output=True, text=True).stdout
+    frames = []
+    for line in out.splitlines():
+        m = re.match(r"\s*([\d.]+) 1\s+([0-9A-F]+)x?\s+Rx\s+d (\d)((?: [0-9A-F]{2})*)\s*$", line)
+        if m:
+            frames.append((float(m.group(1)), int(m.group(2), 16), bytes.fromhex(m.group(4))))
+    return frames
+
+
 class SafetyDemo(unittest.TestCase):
     """The C safety demo (scripts/demo.sh) captured with COP_SIM_PCAP."""
 
@@ -202,6 +233,15 @@ class SafetyDemo(unittest.TestCase):
             self.assertEqual(len(lonely), 1)
             self.assertEqual(error_reports(frames), [(lonely[0], "cop_srdo.order")])
             self.assertEqual(sum(e for _, e, _ in frames.values()), 1)
+            # the candump log as canplayer reads it holds the frames of the
+            # pcap file, with the same times
+            pcap_list = pcap_frames(pcap)
+            asc = log2asc_frames(log)
+            self.assertEqual(len(asc), len(pcap_list))
+            t0 = pcap_list[0][0]
+            for (t, word, data), (t_asc, ident, data_asc) in zip(pcap_list, asc):
+                self.assertEqual((word & 0x1FFFFFFF, data), (ident, data_asc))
+                self.assertAlmostEqual(t - t0, t_asc, places=6)
             pairs_ok = [n for n, (_, _, f) in frames.items() if f.get("cop_srdo.status") == "SRDO 1 pair ok"]
             srdo = [n for n, (ident, _) in enumerate(candump, start=1) if ident in (0x101, 0x102)]
             # every SRDO frame is in a valid pair but the lost frame's
