@@ -25,7 +25,7 @@
 use embedded_can::{ErrorKind, ExtendedId, Frame, Id, StandardId};
 
 use crate::error::{CopKernel, CopResult};
-use crate::port::{CanFrame, CanId, CanPort, Clock, PortStatus, Priority, RxFrame, Ticks};
+use crate::port::{CanFrame, CanId, CanPort, Clock, Priority, RxFrame, Ticks};
 
 /// The identifier of the stack for an [`embedded_can::Id`].
 pub fn id_from_embedded(id: Id) -> CanId {
@@ -329,13 +329,6 @@ impl<C: embedded_can::blocking::Can, K: Clock, const N: usize> CanPort for Block
 
     fn take_rx_overrun(&mut self) -> bool {
         core::mem::take(&mut self.rx_overrun)
-    }
-
-    fn status(&mut self) -> PortStatus {
-        PortStatus {
-            rx_overrun: self.take_rx_overrun(),
-            bus_off: false,
-        }
     }
 }
 
