@@ -550,6 +550,68 @@ static void Reception (void)
     CHECK_RET(SrdoSend(0x1301), kCopSrdoRxTxConflict);
 }
 
+/* ---- receive overruns: only a buffer that can hold SRDO frames raises kCopSrdoOverrun ------- */
+
+/*
+ * SRDO and GFC identifiers are defined in the driver's high buffer
+ * (kCdrvMsgHigh), so an overrun of the low buffer loses non-safety frames
+ * only: no SRDO error (SAFETY_BEHAVIOUR.md section 5, "A received frame that
+ * overwrites an unprocessed one"). An overrun of the high buffer, or the
+ * controller's own overrun (kCdrvOverrun, buffer unknown), still is one.
+ */
+static void RxOverruns (void)
+{
+    static CONST BYTE abUpload1000[8] = { 0x40, 0x00, 0x10, 0x00, 0x00, 0x00, 0x00, 0x00 };
+    static CONST BYTE ab3C[1] = { 0x3C };
+    static CONST BYTE abC3[1] = { 0xC3 };
+    unsigned i;
+    unsigned uEvents;
+    unsigned uErrors;
+
+    /* P's low buffer (CDRV_MAX_RX_BUFF_ENTRIES_LOW) overflows with SDO requests */
+    SimSelectNode(SIM_P);
+    TestProcess(1);
+    TestDrainSent();
+    for (i = 0; i < SimRxCapacity(SIM_P, 0); i++)
+    {
+        CHECK_EQ(SimInject(0x600 + ID_P, 0, 8, abUpload1000), 1);     /* queued at P */
+    }
+    CHECK_EQ(SimInject(0x600 + ID_P, 0, 8, abUpload1000), 0);         /* lost */
+    CHECK_EQ(SimGetStatus(SIM_P) & kCdrvRxBuffLowOverrun, kCdrvRxBuffLowOverrun);
+    CHECK_EQ(SimGetStatus(SIM_P) & kCdrvRxBuffHighOverrun, 0);
+
+    /* then a valid pair from A: its event, no SRDO error */
+    SimSelectNode(SIM_A);
+    SetA(0x3C, 0xC3);
+    CHECK_RET(CcmSendSrdo(0x1301), kCopSuccessful);
+    TestExpectFrame("A -> P normal after a low overrun", 0x101, 1, ab3C);
+    TestExpectFrame("A -> P inverted after a low overrun", 0x102, 1, abC3);
+    SimSelectNode(SIM_P);
+    uEvents = uTestSrdoEvents_g;
+    uErrors = uTestSrdoErrors_g;
+    pfnTestSrdoEventHook_g = TestSrdoEventHandshake;
+    TestProcess(2);
+    pfnTestSrdoEventHook_g = NULL;
+    CHECK_EQ(uTestSrdoEvents_g, uEvents + 1);
+    CHECK_EQ(uTestSrdoErrors_g, uErrors);
+    CHECK_EQ(SimGetStatus(SIM_P) & kCdrvRxBuffLowOverrun, 0);       /* taken and cleared */
+    TestDrainSent();
+
+    /* the high buffer's overrun and the controller's are SRDO errors */
+    uErrors = uTestSrdoErrors_g;
+    pfnTestSrdoErrorHook_g = TestSrdoErrorHandshake;
+    SimRaiseStatus(SIM_P, kCdrvRxBuffHighOverrun);
+    TestProcess(1);
+    CHECK_EQ(uTestSrdoErrors_g, uErrors + 1);
+    CHECK(SawError(kCopSrdoOverrun));
+    uErrors = uTestSrdoErrors_g;
+    SimRaiseStatus(SIM_P, kCdrvOverrun);
+    TestProcess(1);
+    CHECK_EQ(uTestSrdoErrors_g, uErrors + 1);
+    pfnTestSrdoErrorHook_g = NULL;
+    TestDrainSent();
+}
+
 /* ---- the remaining module functions ---------------------------------------------------------- */
 
 static void ModuleFunctions (void)
@@ -671,6 +733,7 @@ int main (void)
     CheckConfigCodes();
     Transmission();
     Reception();
+    RxOverruns();
     ModuleFunctions();
 
     SimSelectNode(SIM_A);

@@ -50,20 +50,22 @@ DWORD CopGetStackVersion(void);
  * # Safety
  * `pInitParam_p` must be NULL or point to a valid `tCcmInitParam`.
  */
-tCopKernel CcmInitCANopen(tCcmInitParam *pInitParam_p, tCcmInitCall FirstCall_p);
+tCopKernel CcmInitCANopen(CCM_DECL_PTR_INSTANCE_HDL_
+                          tCcmInitParam *pInitParam_p,
+                          tCcmInitCall FirstCall_p);
 
 /**
  * `CcmShutDownCANopen`: stops the stack and deletes the driver instance
  * (`CdrvDeleteInstance`). kCopIllegalInstance when not initialised.
  */
-tCopKernel CcmShutDownCANopen(void);
+tCopKernel CcmShutDownCANopen(CCM_DECL_INSTANCE_HDL);
 
 /**
  * `CcmConnectToNet`: INITIALISATION -> PRE-OPERATIONAL (boot-up message,
  * kNmtEvEnterPreOperational). kCopNmtStateError when already connected,
  * kCopLsssInvalidNodeId while the node has no node-ID (LSS).
  */
-tCopKernel CcmConnectToNet(void);
+tCopKernel CcmConnectToNet(CCM_DECL_INSTANCE_HDL);
 
 /**
  * `CcmProcess`: one processing cycle (received frames, SRDO checks,
@@ -73,7 +75,7 @@ tCopKernel CcmConnectToNet(void);
  * not acknowledged by `AppSrdoError` (manual 2.11.6; the application has
  * also been told through `AppSrdoError` itself).
  */
-tCopKernel CcmProcess(void);
+tCopKernel CcmProcess(CCM_DECL_INSTANCE_HDL);
 
 /**
  * `CcmProcessLssInitState`: one processing cycle (as `CcmProcess`) of a
@@ -85,7 +87,7 @@ tCopKernel CcmProcess(void);
  * this call), and for a node that has one from the start;
  * kCopIllegalInstance before `CcmInitCANopen`.
  */
-tCopKernel CcmProcessLssInitState(void);
+tCopKernel CcmProcessLssInitState(CCM_DECL_INSTANCE_HDL);
 
 /**
  * `CcmReadObject`: copies the value of an object (CPU byte order) into
@@ -100,7 +102,11 @@ tCopKernel CcmProcessLssInitState(void);
  * # Safety
  * `pDstData_p` must be valid for `*pSize_p` bytes of writes.
  */
-tCopKernel CcmReadObject(WORD wIndex_p, BYTE bSubindex_p, void *pDstData_p, tObdSize *pSize_p);
+tCopKernel CcmReadObject(CCM_DECL_INSTANCE_HDL_
+                         WORD wIndex_p,
+                         BYTE bSubindex_p,
+                         void *pDstData_p,
+                         tObdSize *pSize_p);
 
 /**
  * `CcmWriteObject`: writes an object (CPU byte order) through the same
@@ -117,31 +123,35 @@ tCopKernel CcmReadObject(WORD wIndex_p, BYTE bSubindex_p, void *pDstData_p, tObd
  * # Safety
  * `pSrcData_p` must be valid for `Size_p` bytes of reads.
  */
-tCopKernel CcmWriteObject(WORD wIndex_p, BYTE bSubindex_p, const void *pSrcData_p, tObdSize Size_p);
+tCopKernel CcmWriteObject(CCM_DECL_INSTANCE_HDL_
+                          WORD wIndex_p,
+                          BYTE bSubindex_p,
+                          const void *pSrcData_p,
+                          tObdSize Size_p);
 
 /**
  * `CcmObdGetNodeState`: the NMT state (`kNodeState*`), 0 before
  * initialisation.
  */
-BYTE CcmObdGetNodeState(void);
+BYTE CcmObdGetNodeState(CCM_DECL_INSTANCE_HDL);
 
 /**
  * `CcmLsssGetNodeId`: this node's ID (0xFF while a node started for LSS
  * has none, see `CcmProcessLssInitState`), 0 before initialisation.
  */
-BYTE CcmLsssGetNodeId(void);
+BYTE CcmLsssGetNodeId(CCM_DECL_INSTANCE_HDL);
 
 /**
  * `CcmNmtsExecCommand`: a local NMT command (kNmtComm*).
  * kCopNmtUnknownCommand for an unknown value, kCopNmtStateError before
  * `CcmConnectToNet`.
  */
-tCopKernel CcmNmtsExecCommand(tNmtCommand NmtCommand_p);
+tCopKernel CcmNmtsExecCommand(CCM_DECL_INSTANCE_HDL_ tNmtCommand NmtCommand_p);
 
 /**
  * `CcmRegisterErrorCallback`.
  */
-void CcmRegisterErrorCallback(tCcmErrorCallback fpErrorCallback_p);
+void CcmRegisterErrorCallback(CCM_DECL_INSTANCE_HDL_ tCcmErrorCallback fpErrorCallback_p);
 
 /**
  * `CcmConfigHbp`: sets the producer heartbeat time (writes 0x1017).
@@ -149,7 +159,7 @@ void CcmRegisterErrorCallback(tCcmErrorCallback fpErrorCallback_p);
  * configured (`CcmInitLgs` and a non-zero life time); otherwise the codes
  * of the object write.
  */
-tCopKernel CcmConfigHbp(WORD wHbProducerTime_p);
+tCopKernel CcmConfigHbp(CCM_DECL_INSTANCE_HDL_ WORD wHbProducerTime_p);
 
 /**
  * `CcmConfigEmcp`: sets the EMCY COB-ID (bit 31 disables the producer),
@@ -159,7 +169,7 @@ tCopKernel CcmConfigHbp(WORD wHbProducerTime_p);
  * identifier CiA 301 reserves, 29 bits without CAN 2.0B); otherwise the
  * codes of the object write.
  */
-tCopKernel CcmConfigEmcp(DWORD dwEmcpProducerCobId_p);
+tCopKernel CcmConfigEmcp(CCM_DECL_INSTANCE_HDL_ DWORD dwEmcpProducerCobId_p);
 
 /**
  * `CcmSendEmergency`: sends an emergency message and records it in
@@ -170,7 +180,7 @@ tCopKernel CcmConfigEmcp(DWORD dwEmcpProducerCobId_p);
  * # Safety
  * `pEmcpParam_p` must be NULL or point to a valid `tEmcParam`.
  */
-tCopKernel CcmSendEmergency(const tEmcParam *pEmcpParam_p);
+tCopKernel CcmSendEmergency(CCM_DECL_INSTANCE_HDL_ const tEmcParam *pEmcpParam_p);
 
 /**
  * `CcmDefineVarTab`: attaches application variables to USERDEF / DOMAIN
@@ -184,7 +194,9 @@ tCopKernel CcmSendEmergency(const tEmcParam *pEmcpParam_p);
  * `pVarTab_p` must point to `wNumOfVars_p` valid entries whose `m_pData`
  * variables outlive the stack.
  */
-tCopKernel CcmDefineVarTab(const tVarParam *pVarTab_p, WORD wNumOfVars_p);
+tCopKernel CcmDefineVarTab(CCM_DECL_INSTANCE_HDL_
+                           const tVarParam *pVarTab_p,
+                           WORD wNumOfVars_p);
 
 /**
  * `CcmCobGetParam`: identifier, type and frame length of the communication
@@ -199,7 +211,7 @@ tCopKernel CcmDefineVarTab(const tVarParam *pVarTab_p, WORD wNumOfVars_p);
  * `pCobParam_p` must be NULL or valid for reading and writing a
  * `tCobParam`.
  */
-tCopKernel CcmCobGetParam(tCobParam *pCobParam_p);
+tCopKernel CcmCobGetParam(CCM_DECL_INSTANCE_HDL_ tCobParam *pCobParam_p);
 
 /**
  * `DynBuildOd`: adds the objects of a binary DCF container to the
@@ -237,7 +249,9 @@ tCopKernel CcmCobGetParam(tCobParam *pCobParam_p);
  * first DWORD names. The process image must stay valid (and is accessed
  * by the stack) until `DynDestroyOd`.
  */
-tCopKernel DynBuildOd(BYTE *pbDcfSegCont_p, tProcessImageDscrpt *pProcessImageDscrpt_p);
+tCopKernel DynBuildOd(CCM_DECL_INSTANCE_HDL_
+                      BYTE *pbDcfSegCont_p,
+                      tProcessImageDscrpt *pProcessImageDscrpt_p);
 
 /**
  * `DynGetLastError` (this library's extension, not part of the SYS TEC
@@ -255,7 +269,8 @@ tCopKernel DynBuildOd(BYTE *pbDcfSegCont_p, tProcessImageDscrpt *pProcessImageDs
  * # Safety
  * Each non-NULL pointer must be valid for writing its type.
  */
-tCopKernel DynGetLastError(WORD *pwIndex_p,
+tCopKernel DynGetLastError(CCM_DECL_INSTANCE_HDL_
+                           WORD *pwIndex_p,
                            BYTE *pbSubIndex_p,
                            DWORD *pdwOffset_p,
                            tCopKernel *pCode_p);
@@ -274,7 +289,7 @@ tCopKernel DynGetLastError(WORD *pwIndex_p,
  * Returns kCopSuccessful; kCopIllegalInstance when there is neither an
  * initialised stack nor a dynamic OD to give back.
  */
-tCopKernel DynDestroyOd(void);
+tCopKernel DynDestroyOd(CCM_DECL_INSTANCE_HDL);
 
 #if defined(COP_HOST_SIMULATION)
 /**
@@ -294,7 +309,7 @@ tCopKernel CopSimSelectInstance(BYTE bInstance_p);
  * the listed producers are received and not reported. Returns
  * kCopSuccessful (kCopIllegalInstance before `CcmInitCANopen`).
  */
-tCopKernel CcmInitEmcc(void);
+tCopKernel CcmInitEmcc(CCM_DECL_INSTANCE_HDL);
 
 /**
  * `CcmInitEmccEx`: enables the emergency consumer; every valid emergency
@@ -303,7 +318,7 @@ tCopKernel CcmInitEmcc(void);
  * order received, in PRE-OPERATIONAL and OPERATIONAL. Returns
  * kCopSuccessful (kCopIllegalInstance before `CcmInitCANopen`).
  */
-tCopKernel CcmInitEmccEx(tAppEmccEventCallback pfnCallback_p);
+tCopKernel CcmInitEmccEx(CCM_DECL_INSTANCE_HDL_ tAppEmccEventCallback pfnCallback_p);
 
 /**
  * `CcmEmccDefineProducerTab`: the producers (node-IDs) whose emergencies
@@ -319,18 +334,20 @@ tCopKernel CcmInitEmccEx(tAppEmccEventCallback pfnCallback_p);
  * again when the application changes it (README "Tables with free
  * slots").
  */
-tCopKernel CcmEmccDefineProducerTab(const BYTE *pbProducerTab_p, BYTE bNumOfProducer_p);
+tCopKernel CcmEmccDefineProducerTab(CCM_DECL_INSTANCE_HDL_
+                                    const BYTE *pbProducerTab_p,
+                                    BYTE bNumOfProducer_p);
 
 /**
  * `CcmInitNmtm`: enables the NMT master (boot-up detection, guarding).
  */
-tCopKernel CcmInitNmtm(void);
+tCopKernel CcmInitNmtm(CCM_DECL_INSTANCE_HDL);
 
 /**
  * `CcmInitNmtmEx`: as `CcmInitNmtm`, with a callback for boot-up and
  * guarding events (`kNmtErrCtrlEvBootupReceived`, `kNmtErrCtrlEvLg*`).
  */
-tCopKernel CcmInitNmtmEx(tAppNmtmEventCallback pfnCallback_p);
+tCopKernel CcmInitNmtmEx(CCM_DECL_INSTANCE_HDL_ tAppNmtmEventCallback pfnCallback_p);
 
 /**
  * `CcmDefineSlaveTab`: the slaves the master manages; entries 0 are
@@ -342,7 +359,9 @@ tCopKernel CcmInitNmtmEx(tAppNmtmEventCallback pfnCallback_p);
  * until the next call or `CcmShutDownCANopen`: the table is read again
  * when the application changes it (README "Tables with free slots").
  */
-tCopKernel CcmDefineSlaveTab(const BYTE *pbSlaveTab_p, BYTE bNumOfSlaves_p);
+tCopKernel CcmDefineSlaveTab(CCM_DECL_INSTANCE_HDL_
+                             const BYTE *pbSlaveTab_p,
+                             BYTE bNumOfSlaves_p);
 
 /**
  * `CcmSendNmtCommand`: NMT module control to a node (0 = all nodes; the
@@ -350,17 +369,19 @@ tCopKernel CcmDefineSlaveTab(const BYTE *pbSlaveTab_p, BYTE bNumOfSlaves_p);
  * kCopNmtUnknownCommand, kCopNmtmInvalidSlaveNodeId, kCopNmtStateError
  * before `CcmConnectToNet`, or the driver's code.
  */
-tCopKernel CcmSendNmtCommand(BYTE bNodeId_p, tNmtCommand NmtCommand_p);
+tCopKernel CcmSendNmtCommand(CCM_DECL_INSTANCE_HDL_
+                             BYTE bNodeId_p,
+                             tNmtCommand NmtCommand_p);
 
 /**
  * `CcmBootNetwork`: "start remote node" to all nodes.
  */
-tCopKernel CcmBootNetwork(void);
+tCopKernel CcmBootNetwork(CCM_DECL_INSTANCE_HDL);
 
 /**
  * `CcmTriggerNodeGuard`: sends one guard request to a slave now.
  */
-tCopKernel CcmTriggerNodeGuard(BYTE bNodeId_p);
+tCopKernel CcmTriggerNodeGuard(CCM_DECL_INSTANCE_HDL_ BYTE bNodeId_p);
 
 /**
  * `CcmConfigLgm`: guard time and life time factor of a slave (time 0
@@ -369,7 +390,9 @@ tCopKernel CcmTriggerNodeGuard(BYTE bNodeId_p);
  * # Safety
  * `pSlaveParam_p` must be NULL or point to a valid `tNmtmSlaveParam`.
  */
-tCopKernel CcmConfigLgm(BYTE bNodeId_p, const tNmtmSlaveParam *pSlaveParam_p);
+tCopKernel CcmConfigLgm(CCM_DECL_INSTANCE_HDL_
+                        BYTE bNodeId_p,
+                        const tNmtmSlaveParam *pSlaveParam_p);
 
 /**
  * `CcmNmtmGetSlaveInfo`: what the master knows about a slave: the
@@ -381,19 +404,21 @@ tCopKernel CcmConfigLgm(BYTE bNodeId_p, const tNmtmSlaveParam *pSlaveParam_p);
  * # Safety
  * `pSlaveInfo_p` must be NULL or valid for writing a `tNmtmSlaveInfo`.
  */
-tCopKernel CcmNmtmGetSlaveInfo(BYTE bNodeId_p, tNmtmSlaveInfo *pSlaveInfo_p);
+tCopKernel CcmNmtmGetSlaveInfo(CCM_DECL_INSTANCE_HDL_
+                               BYTE bNodeId_p,
+                               tNmtmSlaveInfo *pSlaveInfo_p);
 
 /**
  * `CcmInitHbc`: the heartbeat consumer runs from object 0x1016 (always
  * active in this library); kept for source compatibility.
  */
-tCopKernel CcmInitHbc(void);
+tCopKernel CcmInitHbc(CCM_DECL_INSTANCE_HDL);
 
 /**
  * `CcmInitHbcEx`: registers the heartbeat consumer callback
  * (`kNmtErrCtrlEvHbcConnected`, `...ConnectionLost`, `...NodeStateChanged`).
  */
-tCopKernel CcmInitHbcEx(tAppHbcEventCallback fpHbcEventCallback_p);
+tCopKernel CcmInitHbcEx(CCM_DECL_INSTANCE_HDL_ tAppHbcEventCallback fpHbcEventCallback_p);
 
 /**
  * `CcmHbcDefineProducerTab`: supervises producers by writing their entries
@@ -404,7 +429,9 @@ tCopKernel CcmInitHbcEx(tAppHbcEventCallback fpHbcEventCallback_p);
  * # Safety
  * `pbProducerTab_p` must be valid for `bNumOfProducer_p` entries.
  */
-tCopKernel CcmHbcDefineProducerTab(const tHbcProdParam *pbProducerTab_p, BYTE bNumOfProducer_p);
+tCopKernel CcmHbcDefineProducerTab(CCM_DECL_INSTANCE_HDL_
+                                   const tHbcProdParam *pbProducerTab_p,
+                                   BYTE bNumOfProducer_p);
 
 /**
  * `CcmHbcGetNodeState`: the last NMT state a supervised node reported.
@@ -414,7 +441,7 @@ tCopKernel CcmHbcDefineProducerTab(const tHbcProdParam *pbProducerTab_p, BYTE bN
  * # Safety
  * `pNodeState_p` must be NULL or valid for writing one byte.
  */
-tCopKernel CcmHbcGetNodeState(BYTE bNodeId_p, BYTE *pNodeState_p);
+tCopKernel CcmHbcGetNodeState(CCM_DECL_INSTANCE_HDL_ BYTE bNodeId_p, BYTE *pNodeState_p);
 
 /**
  * `CcmSdocDefineClientTab`: defines SDO client channels. Per entry the
@@ -427,7 +454,9 @@ tCopKernel CcmHbcGetNodeState(BYTE bNodeId_p, BYTE *pNodeState_p);
  * # Safety
  * `pClientTab_p` must be valid for `bNumOfClients_p` entries.
  */
-tCopKernel CcmSdocDefineClientTab(const tSdocParam *pClientTab_p, BYTE bNumOfClients_p);
+tCopKernel CcmSdocDefineClientTab(CCM_DECL_INSTANCE_HDL_
+                                  const tSdocParam *pClientTab_p,
+                                  BYTE bNumOfClients_p);
 
 /**
  * `CcmSdocStartTransfer`: starts an upload (kSdocTypeSegUp), a download
@@ -445,13 +474,14 @@ tCopKernel CcmSdocDefineClientTab(const tSdocParam *pClientTab_p, BYTE bNumOfCli
  * `pSdoTransParam_p` must be NULL or valid; `m_pData` must stay valid for
  * `m_DataLen` bytes until the transfer has ended.
  */
-tCopKernel CcmSdocStartTransfer(const tSdocTransferParam *pSdoTransParam_p);
+tCopKernel CcmSdocStartTransfer(CCM_DECL_INSTANCE_HDL_
+                                const tSdocTransferParam *pSdoTransParam_p);
 
 /**
  * `CcmSdocAbort`: aborts a running transfer and tells the server.
  * kCopSdocClientNotExist, kCopSdocTransferError (no transfer running).
  */
-tCopKernel CcmSdocAbort(WORD wClientIndex_p, DWORD dwAbortCode_p);
+tCopKernel CcmSdocAbort(CCM_DECL_INSTANCE_HDL_ WORD wClientIndex_p, DWORD dwAbortCode_p);
 
 /**
  * `CcmSdocGetState`: state of a client channel and the abort code of its
@@ -461,7 +491,10 @@ tCopKernel CcmSdocAbort(WORD wClientIndex_p, DWORD dwAbortCode_p);
  * # Safety
  * The pointers must be NULL or valid for writing.
  */
-tCopKernel CcmSdocGetState(WORD wClientIndex_p, tSdocState *pSdocState_p, DWORD *pdwAbortCode_p);
+tCopKernel CcmSdocGetState(CCM_DECL_INSTANCE_HDL_
+                           WORD wClientIndex_p,
+                           tSdocState *pSdocState_p,
+                           DWORD *pdwAbortCode_p);
 
 /**
  * `SdocGetTransmittedBytes`: bytes moved by the channel's last finished
@@ -471,7 +504,9 @@ tCopKernel CcmSdocGetState(WORD wClientIndex_p, tSdocState *pSdocState_p, DWORD 
  * # Safety
  * `pdwBytes_p` must be NULL or valid for writing.
  */
-tCopKernel SdocGetTransmittedBytes(WORD wClientIndex_p, DWORD *pdwBytes_p);
+tCopKernel SdocGetTransmittedBytes(MCO_DECL_INSTANCE_PTR_
+                                   WORD wClientIndex_p,
+                                   DWORD *pdwBytes_p);
 
 /**
  * `CcmDefinePdoTab`: defines PDOs from a table (normally in the NMT
@@ -496,7 +531,8 @@ tCopKernel SdocGetTransmittedBytes(WORD wClientIndex_p, DWORD *pdwBytes_p);
  * # Safety
  * `pPdoTab_p` must be NULL or point to `wNumOfPdos_p` valid entries.
  */
-tCopKernel CcmDefinePdoTab(const tPdoParam *pPdoTab_p,
+tCopKernel CcmDefinePdoTab(CCM_DECL_INSTANCE_HDL_
+                           const tPdoParam *pPdoTab_p,
                            WORD wNumOfPdos_p);
 
 /**
@@ -514,7 +550,9 @@ tCopKernel CcmDefinePdoTab(const tPdoParam *pPdoTab_p,
  * `pPdoTab_p` must be NULL or point to `wNumOfPdos_p` valid entries whose
  * `m_pVarData` blocks outlive the stack.
  */
-tCopKernel CcmDefineStaticPdoTab(const tPdoStaticParam *pPdoTab_p, WORD wNumOfPdos_p);
+tCopKernel CcmDefineStaticPdoTab(CCM_DECL_INSTANCE_HDL_
+                                 const tPdoStaticParam *pPdoTab_p,
+                                 WORD wNumOfPdos_p);
 
 /**
  * `CcmSignalStaticPdo`: signals that a TPDO's data changed. Types 254/255
@@ -524,14 +562,14 @@ tCopKernel CcmDefineStaticPdoTab(const tPdoStaticParam *pPdoTab_p, WORD wNumOfPd
  * Returns kCopSuccessful or kCopPdoNotExist (not a TPDO of the
  * dictionary).
  */
-tCopKernel CcmSignalStaticPdo(WORD wCommuIndex_p);
+tCopKernel CcmSignalStaticPdo(CCM_DECL_INSTANCE_HDL_ WORD wCommuIndex_p);
 
 /**
  * `CcmSignalCheckVar`: the next `CcmProcess` compares the data of every
  * event-driven and type 0 TPDO with what it sent last and signals the
  * changed ones. Returns kCopSuccessful.
  */
-tCopKernel CcmSignalCheckVar(void);
+tCopKernel CcmSignalCheckVar(CCM_DECL_INSTANCE_HDL);
 
 /**
  * `CcmSignalVar`: signals every valid TPDO that maps the variable at
@@ -541,7 +579,7 @@ tCopKernel CcmSignalCheckVar(void);
  * Returns kCopSuccessful, kCopInvalidParam (NULL) or kCopPdoVarNotFound
  * (no valid TPDO maps the variable).
  */
-tCopKernel CcmSignalVar(void *pVar_p);
+tCopKernel CcmSignalVar(CCM_DECL_INSTANCE_HDL_ void *pVar_p);
 
 /**
  * `CcmSendPdo`: samples and sends a TPDO now without looking at its
@@ -553,14 +591,14 @@ tCopKernel CcmSignalVar(void *pVar_p);
  * invalid); kCopPdoErrorPdoEncode (a mapped object cannot be read); the
  * driver's code (e.g. kCopCdrvTxBuffLowOverrun).
  */
-tCopKernel CcmSendPdo(WORD wCommuIndex_p);
+tCopKernel CcmSendPdo(CCM_DECL_INSTANCE_HDL_ WORD wCommuIndex_p);
 
 /**
  * `CcmInitSyncConsumer`: (re)reads 0x1005–0x1007. The SYNC consumer is
  * active from the start (COB-ID of 0x1005, 0x80 without that object).
  * Returns kCopSuccessful.
  */
-tCopKernel CcmInitSyncConsumer(void);
+tCopKernel CcmInitSyncConsumer(CCM_DECL_INSTANCE_HDL);
 
 /**
  * `CcmConfigSyncConsumer`: sets the SYNC COB-ID and the synchronous
@@ -571,7 +609,9 @@ tCopKernel CcmInitSyncConsumer(void);
  * node the SYNC producer is `CcmConfigSyncProducer`'s job —, a restricted
  * or malformed identifier).
  */
-tCopKernel CcmConfigSyncConsumer(DWORD dwSyncId_p, DWORD dwSyncWindowLength_p);
+tCopKernel CcmConfigSyncConsumer(CCM_DECL_INSTANCE_HDL_
+                                 DWORD dwSyncId_p,
+                                 DWORD dwSyncWindowLength_p);
 
 /**
  * `CcmEnterCriticalSectionPdoProcess`: until the matching leave,
@@ -579,14 +619,14 @@ tCopKernel CcmConfigSyncConsumer(DWORD dwSyncId_p, DWORD dwSyncWindowLength_p);
  * variables for TPDOs (received RPDOs are kept, the latest per PDO). Calls
  * nest. Ignored before `CcmInitCANopen` and inside OBD callbacks.
  */
-void CcmEnterCriticalSectionPdoProcess(void);
+void CcmEnterCriticalSectionPdoProcess(CCM_DECL_INSTANCE_HDL);
 
 /**
  * `CcmLeaveCriticalSectionPdoProcess`: ends one level of
  * `CcmEnterCriticalSectionPdoProcess`; kept RPDO data reach their
  * variables in the next `CcmProcess`.
  */
-void CcmLeaveCriticalSectionPdoProcess(void);
+void CcmLeaveCriticalSectionPdoProcess(CCM_DECL_INSTANCE_HDL);
 
 /**
  * `CcmClearPreDefinedErrorField`: empties the pre-defined error field
@@ -595,7 +635,7 @@ void CcmLeaveCriticalSectionPdoProcess(void);
  * kCopObdIndexNotExist when the dictionary has no 0x1003 (nothing
  * changes).
  */
-tCopKernel CcmClearPreDefinedErrorField(void);
+tCopKernel CcmClearPreDefinedErrorField(CCM_DECL_INSTANCE_HDL);
 
 #if defined(COP_CFG_NMTS_USE_LIFEGUARDING)
 /**
@@ -607,7 +647,7 @@ tCopKernel CcmClearPreDefinedErrorField(void);
  * recorded), once per loss. Returns kCopSuccessful. May be called from the
  * NMT callback at kNmtEvEnterInitialising.
  */
-tCopKernel CcmInitLgs(void);
+tCopKernel CcmInitLgs(CCM_DECL_INSTANCE_HDL);
 #endif
 
 #if defined(COP_CFG_NMTS_USE_LIFEGUARDING)
@@ -620,7 +660,9 @@ tCopKernel CcmInitLgs(void);
  * while the producer heartbeat time 0x1017 is not 0 (nothing changes); or
  * the code of a refused object write.
  */
-tCopKernel CcmConfigLgs(WORD wLifeGuardTime_p, BYTE bLifeGuardFactor_p);
+tCopKernel CcmConfigLgs(CCM_DECL_INSTANCE_HDL_
+                        WORD wLifeGuardTime_p,
+                        BYTE bLifeGuardFactor_p);
 #endif
 
 /**
@@ -635,7 +677,9 @@ tCopKernel CcmConfigLgs(WORD wLifeGuardTime_p, BYTE bLifeGuardFactor_p);
  * kCopSuccessful; kCopInvalidParam for a restricted or malformed
  * identifier (nothing changes); or the code of a refused object write.
  */
-tCopKernel CcmConfigSyncProducer(DWORD dwSyncId_p, DWORD dwSyncCycleTime_p);
+tCopKernel CcmConfigSyncProducer(CCM_DECL_INSTANCE_HDL_
+                                 DWORD dwSyncId_p,
+                                 DWORD dwSyncCycleTime_p);
 
 /**
  * `CcmTspSend`: sends one TIME frame (CiA 301: 6 bytes, milliseconds
@@ -649,7 +693,9 @@ tCopKernel CcmConfigSyncProducer(DWORD dwSyncId_p, DWORD dwSyncCycleTime_p);
  * # Safety
  * `pTimeOfDay_p` must be NULL or point to a valid `tTimeOfDay`.
  */
-tCopKernel CcmTspSend(DWORD dwTimeStampId, const tTimeOfDay *pTimeOfDay_p);
+tCopKernel CcmTspSend(CCM_DECL_INSTANCE_HDL_
+                      DWORD dwTimeStampId,
+                      const tTimeOfDay *pTimeOfDay_p);
 
 /**
  * `CcmSetStoreDriver`: registers the application's non-volatile memory
@@ -665,7 +711,7 @@ tCopKernel CcmTspSend(DWORD dwTimeStampId, const tTimeOfDay *pTimeOfDay_p);
  * `pDriver_p` is NULL or points to a `tCopStoreDriver` that lives as long
  * as the instance.
  */
-tCopKernel CcmSetStoreDriver(const tCopStoreDriver *pDriver_p);
+tCopKernel CcmSetStoreDriver(CCM_DECL_INSTANCE_HDL_ const tCopStoreDriver *pDriver_p);
 
 /**
  * `CcmInitStore`: opens the registered storage driver (`m_fpOpen`) and
@@ -678,7 +724,7 @@ tCopKernel CcmSetStoreDriver(const tCopStoreDriver *pDriver_p);
  * configuration key (ignored: nothing of it is applied, the next "save"
  * replaces it); kCopIllegalInstance before `CcmInitCANopen`.
  */
-tCopKernel CcmInitStore(void);
+tCopKernel CcmInitStore(CCM_DECL_INSTANCE_HDL);
 
 /**
  * `CcmStoreCheckArchivState`: kCopSuccessful when the stored image holds
@@ -687,7 +733,7 @@ tCopKernel CcmInitStore(void);
  * before `CcmInitStore`); kCopObdIllegalPart when `bCurrentOdPart_p` is
  * not a combination of `kObdPart*` bits.
  */
-tCopKernel CcmStoreCheckArchivState(tObdPart bCurrentOdPart_p);
+tCopKernel CcmStoreCheckArchivState(CCM_DECL_INSTANCE_HDL_ tObdPart bCurrentOdPart_p);
 
 /**
  * `CcmStoreRestoreDefault`: erases the stored parameters (with a
@@ -696,7 +742,7 @@ tCopKernel CcmStoreCheckArchivState(tObdPart bCurrentOdPart_p);
  * kCopCcmStoreHwError when the driver fails, kCopIllegalInstance before
  * `CcmInitCANopen`.
  */
-tCopKernel CcmStoreRestoreDefault(void);
+tCopKernel CcmStoreRestoreDefault(CCM_DECL_INSTANCE_HDL);
 
 /**
  * `CcmSendSrdo`: sends one transmit SRDO (`wSrdoCommuIndex_p` =
@@ -714,12 +760,12 @@ tCopKernel CcmStoreRestoreDefault(void);
  * With 0, every transmit SRDO is attempted and the first error is
  * returned.
  */
-tCopKernel CcmSendSrdo(WORD wSrdoCommuIndex_p);
+tCopKernel CcmSendSrdo(CCM_DECL_INSTANCE_HDL_ WORD wSrdoCommuIndex_p);
 
 /**
  * `SrdoSend`: the module function behind `CcmSendSrdo`.
  */
-tCopKernel SrdoSend(WORD wSrdoCommuIndex_p);
+tCopKernel SrdoSend(MCO_DECL_INSTANCE_PTR_ WORD wSrdoCommuIndex_p);
 
 /**
  * `CcmCheckSrdoConfig`: checks every SRDO (including disabled ones): CRC
@@ -734,7 +780,7 @@ tCopKernel SrdoSend(WORD wSrdoCommuIndex_p);
  * # Safety
  * `pwCommuIndex_p` must be NULL or valid for writing a WORD.
  */
-tCopKernel CcmCheckSrdoConfig(WORD *pwCommuIndex_p);
+tCopKernel CcmCheckSrdoConfig(CCM_DECL_INSTANCE_HDL_ WORD *pwCommuIndex_p);
 
 /**
  * `SrdoCheckConfig`: the module function behind `CcmCheckSrdoConfig`.
@@ -742,7 +788,7 @@ tCopKernel CcmCheckSrdoConfig(WORD *pwCommuIndex_p);
  * # Safety
  * As `CcmCheckSrdoConfig`.
  */
-tCopKernel SrdoCheckConfig(WORD *pwCommuIndex_p);
+tCopKernel SrdoCheckConfig(MCO_DECL_INSTANCE_PTR_ WORD *pwCommuIndex_p);
 
 #if defined(COP_CFG_SRDO_USE_GFC)
 /**
@@ -751,14 +797,14 @@ tCopKernel SrdoCheckConfig(WORD *pwCommuIndex_p);
  * kCopSrdoNmtError when not OPERATIONAL, kCopSrdoInvalid when 0x1300 is
  * not 1, the driver's code when it refuses the frame.
  */
-tCopKernel CcmSendGfc(void);
+tCopKernel CcmSendGfc(CCM_DECL_INSTANCE_HDL);
 #endif
 
 #if defined(COP_CFG_SRDO_USE_GFC)
 /**
  * `SrdoSendGfc`: the module function behind `CcmSendGfc`.
  */
-tCopKernel SrdoSendGfc(void);
+tCopKernel SrdoSendGfc(MCO_DECL_INSTANCE_PTR);
 #endif
 
 /**
@@ -768,7 +814,9 @@ tCopKernel SrdoSendGfc(void);
  * # Safety
  * `pbSrdoState_p` must be NULL or valid for writing a byte.
  */
-tCopKernel CcmGetSrdoState(BYTE *pbSrdoState_p, WORD wSrdoCommuIndex_p);
+tCopKernel CcmGetSrdoState(CCM_DECL_INSTANCE_HDL_
+                           BYTE *pbSrdoState_p,
+                           WORD wSrdoCommuIndex_p);
 
 /**
  * `SrdoGetState`: the module function behind `CcmGetSrdoState`.
@@ -776,18 +824,20 @@ tCopKernel CcmGetSrdoState(BYTE *pbSrdoState_p, WORD wSrdoCommuIndex_p);
  * # Safety
  * As `CcmGetSrdoState`.
  */
-tCopKernel SrdoGetState(BYTE *pbSrdoState_p, WORD wSrdoCommuIndex_p);
+tCopKernel SrdoGetState(MCO_DECL_INSTANCE_PTR_ BYTE *pbSrdoState_p, WORD wSrdoCommuIndex_p);
 
 /**
  * `CcmSetSrdoState`: writes bits 4-7 of the status byte (bits 0-3 are
  * reserved and stay 0). kCopSrdoNotExist.
  */
-tCopKernel CcmSetSrdoState(BYTE bSrdoState_p, WORD wSrdoCommuIndex_p);
+tCopKernel CcmSetSrdoState(CCM_DECL_INSTANCE_HDL_
+                           BYTE bSrdoState_p,
+                           WORD wSrdoCommuIndex_p);
 
 /**
  * `SrdoSetState`: the module function behind `CcmSetSrdoState`.
  */
-tCopKernel SrdoSetState(BYTE bSrdoState_p, WORD wSrdoCommuIndex_p);
+tCopKernel SrdoSetState(MCO_DECL_INSTANCE_PTR_ BYTE bSrdoState_p, WORD wSrdoCommuIndex_p);
 
 /**
  * `CcmGetSrdoParam`: direction and SCT (`tSrdoCommuParam`) and, with
@@ -801,7 +851,8 @@ tCopKernel SrdoSetState(BYTE bSrdoState_p, WORD wSrdoCommuIndex_p);
  * # Safety
  * Non-NULL pointers must be valid for writing their structure.
  */
-tCopKernel CcmGetSrdoParam(WORD wSrdoCommuIndex_p,
+tCopKernel CcmGetSrdoParam(CCM_DECL_INSTANCE_HDL_
+                           WORD wSrdoCommuIndex_p,
                            tSrdoCommuParam *pSrdoCommuParam_p,
                            tSrdoMappParam *pSrdoMappParam_p);
 
@@ -812,7 +863,9 @@ tCopKernel CcmGetSrdoParam(WORD wSrdoCommuIndex_p,
  * # Safety
  * `pSrdoCommuParam_p` must be NULL or valid for writing.
  */
-tCopKernel SrdoGetCommuParam(WORD wSrdoCommuIndex_p, tSrdoCommuParam *pSrdoCommuParam_p);
+tCopKernel SrdoGetCommuParam(MCO_DECL_INSTANCE_PTR_
+                             WORD wSrdoCommuIndex_p,
+                             tSrdoCommuParam *pSrdoCommuParam_p);
 
 #if !defined(COP_CFG_SRDO_STATIC_MAPPING)
 /**
@@ -822,7 +875,9 @@ tCopKernel SrdoGetCommuParam(WORD wSrdoCommuIndex_p, tSrdoCommuParam *pSrdoCommu
  * # Safety
  * `pSrdoMappParam_p` must be NULL or valid for writing.
  */
-tCopKernel SrdoGetMappParam(WORD wSrdoCommuIndex_p, tSrdoMappParam *pSrdoMappParam_p);
+tCopKernel SrdoGetMappParam(MCO_DECL_INSTANCE_PTR_
+                            WORD wSrdoCommuIndex_p,
+                            tSrdoMappParam *pSrdoMappParam_p);
 #endif
 
 /**
@@ -833,7 +888,7 @@ tCopKernel SrdoGetMappParam(WORD wSrdoCommuIndex_p, tSrdoMappParam *pSrdoMappPar
  * # Safety
  * `pwCrc_p` must be NULL or valid for writing a WORD.
  */
-tCopKernel CcmCalcSrdoCrc(WORD wCommuIndex_p, WORD *pwCrc_p);
+tCopKernel CcmCalcSrdoCrc(MCO_DECL_INSTANCE_PTR_ WORD wCommuIndex_p, WORD *pwCrc_p);
 
 /**
  * `SrdoCalcSrdoCrc`: as `CcmCalcSrdoCrc`; `pSrdoEntry_p` must be NULL
@@ -842,7 +897,10 @@ tCopKernel CcmCalcSrdoCrc(WORD wCommuIndex_p, WORD *pwCrc_p);
  * # Safety
  * `pwCrc_p` must be NULL or valid for writing a WORD.
  */
-tCopKernel SrdoCalcSrdoCrc(WORD wCommuIndex_p, void *pSrdoEntry_p, WORD *pwCrc_p);
+tCopKernel SrdoCalcSrdoCrc(MCO_DECL_INSTANCE_PTR_
+                           WORD wCommuIndex_p,
+                           void *pSrdoEntry_p,
+                           WORD *pwCrc_p);
 
 #if defined(COP_CFG_SRDO_STATIC_MAPPING)
 /**
@@ -858,7 +916,8 @@ tCopKernel SrdoCalcSrdoCrc(WORD wCommuIndex_p, void *pSrdoEntry_p, WORD *pwCrc_p
  * Both fields must stay valid for the mapped length for as long as the
  * stack runs (they are application statics in practice).
  */
-tCopKernel CcmStaticDefineSrdoVarFields(WORD wCommuIndex_p,
+tCopKernel CcmStaticDefineSrdoVarFields(CCM_DECL_INSTANCE_HDL_
+                                        WORD wCommuIndex_p,
                                         void *pNormalData_p,
                                         void *pInversData_p);
 #endif
@@ -871,7 +930,10 @@ tCopKernel CcmStaticDefineSrdoVarFields(WORD wCommuIndex_p,
  * # Safety
  * As `CcmStaticDefineSrdoVarFields`.
  */
-tCopKernel SrdoStaticDefineVarFields(WORD wCommuIndex_p, void *pNormalData_p, void *pInversData_p);
+tCopKernel SrdoStaticDefineVarFields(MCO_DECL_INSTANCE_PTR_
+                                     WORD wCommuIndex_p,
+                                     void *pNormalData_p,
+                                     void *pInversData_p);
 #endif
 
 /**
@@ -885,21 +947,22 @@ tCopKernel SrdoStaticDefineVarFields(WORD wCommuIndex_p, void *pNormalData_p, vo
  * # Safety
  * `pInitParam_p` must be NULL or point to a valid `tSrdoInitParam`.
  */
-tCopKernel SrdoInit(const tSrdoInitParam *pInitParam_p);
+tCopKernel SrdoInit(MCO_DECL_PTR_INSTANCE_PTR_ const tSrdoInitParam *pInitParam_p);
 
 /**
- * `SrdoAddInstance`: single-instance build — behaves like `SrdoInit`.
+ * `SrdoAddInstance`: behaves like `SrdoInit` (the SRDO module of an
+ * instance is created by `CcmInitCANopen`).
  *
  * # Safety
  * As `SrdoInit`.
  */
-tCopKernel SrdoAddInstance(const tSrdoInitParam *pInitParam_p);
+tCopKernel SrdoAddInstance(MCO_DECL_PTR_INSTANCE_PTR_ const tSrdoInitParam *pInitParam_p);
 
 /**
  * `SrdoDeleteInstance`: stops every SRDO (as leaving OPERATIONAL does);
  * they restart with the next transition to OPERATIONAL.
  */
-tCopKernel SrdoDeleteInstance(void);
+tCopKernel SrdoDeleteInstance(MCO_DECL_INSTANCE_PTR);
 
 /**
  * `SrdoNmtEvent`: the stack passes every NMT event to the SRDO module
@@ -908,7 +971,7 @@ tCopKernel SrdoDeleteInstance(void);
  * contradicts it gives kCopSrdoNmtError, so the module can never run out
  * of step with the node.
  */
-tCopKernel SrdoNmtEvent(tNmtEvent NmtEvent_p);
+tCopKernel SrdoNmtEvent(MCO_DECL_INSTANCE_PTR_ tNmtEvent NmtEvent_p);
 
 /**
  * `SrdoProcess`: one processing cycle of the stack (received frames, SRDO
@@ -916,7 +979,7 @@ tCopKernel SrdoNmtEvent(tNmtEvent NmtEvent_p);
  * module; returns kCopSrdoNotHandledInApp when an error reported in this
  * cycle was not acknowledged by `AppSrdoError` (status bits 6-7 = 10).
  */
-tCopKernel SrdoProcess(void);
+tCopKernel SrdoProcess(MCO_DECL_INSTANCE_PTR);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -8,7 +8,7 @@
  * copcfg.h (COP_CONFIG_DIR) and exports exactly one byte whose name encodes
  * those switches:
  *
- *   CopLibAbi_os<1|2|4>_gr<8|16|32|64>_sm<0|1>_pm<0|1>_ts<0|1>_id<11|29>_pe<8|64>_ch<8|16>
+ *   CopLibAbi_os<1|2|4>_gr<8|16|32|64>_sm<0|1>_pm<0|1>_ts<0|1>_id<11|29>_pe<8|64>_ch<8|16>[_in<2..8>]
  *
  *   os  sizeof(tObdSize)            (OBD_SUPPORTED_OBJ_SIZE)
  *   gr  SRDO_GRANULARITY            (SRDO_MAX_MAPPENTRIES = 128 / gr)
@@ -19,6 +19,9 @@
  *   pe  PDO_MAX_MAPPENTRIES         (tPdoParam.m_adwMappParam; 64 with
  *                                   PDO_USE_BIT_MAPPING and PDO_GRANULARITY 64)
  *   ch  COB_MORE_THAN_128_ENTRIES   (tCobHdl BYTE or WORD, CcmCobGetParam)
+ *   in  COP_MAX_INSTANCES           (only when more than 1: every Ccm*
+ *                                   function and callback takes the
+ *                                   instance handle)
  *
  * This header builds the same name from the application's configuration.
  * objdef.h stores its address in tObdRamParam.m_pbAbiSignature, so an
@@ -87,6 +90,30 @@
 #define COP_ABI_CH_ ch8
 #endif
 
+/* The instance count is part of the name only where it is more than one
+ * (a single-instance build keeps the name it always had). */
+#if (COP_MAX_INSTANCES == 1)
+#define COP_ABI_CHIN_ COP_ABI_CH_
+#elif (COP_MAX_INSTANCES == 2)
+#define COP_ABI_CHIN_ COP_ABI_PASTE_IN_(COP_ABI_CH_, _in2)
+#elif (COP_MAX_INSTANCES == 3)
+#define COP_ABI_CHIN_ COP_ABI_PASTE_IN_(COP_ABI_CH_, _in3)
+#elif (COP_MAX_INSTANCES == 4)
+#define COP_ABI_CHIN_ COP_ABI_PASTE_IN_(COP_ABI_CH_, _in4)
+#elif (COP_MAX_INSTANCES == 5)
+#define COP_ABI_CHIN_ COP_ABI_PASTE_IN_(COP_ABI_CH_, _in5)
+#elif (COP_MAX_INSTANCES == 6)
+#define COP_ABI_CHIN_ COP_ABI_PASTE_IN_(COP_ABI_CH_, _in6)
+#elif (COP_MAX_INSTANCES == 7)
+#define COP_ABI_CHIN_ COP_ABI_PASTE_IN_(COP_ABI_CH_, _in7)
+#elif (COP_MAX_INSTANCES == 8)
+#define COP_ABI_CHIN_ COP_ABI_PASTE_IN_(COP_ABI_CH_, _in8)
+#else
+#error "COP_MAX_INSTANCES must be 1..8"
+#endif
+#define COP_ABI_PASTE_IN2_(ch, in) ch##in
+#define COP_ABI_PASTE_IN_(ch, in) COP_ABI_PASTE_IN2_(ch, in)
+
 /* Two levels so that the arguments are expanded before pasting. */
 #define COP_ABI_NAME_PASTE_(os, gr, sm, pm, ts, id, pe, ch) \
     CopLibAbi_##os##_##gr##_##sm##_##pm##_##ts##_##id##_##pe##_##ch
@@ -95,7 +122,7 @@
 /* The signature symbol of this configuration (defined by the library). */
 #define COP_ABI_SIGNATURE \
     COP_ABI_NAME_(COP_ABI_OS_, COP_ABI_GR_, COP_ABI_SM_, COP_ABI_PM_, COP_ABI_TS_, COP_ABI_ID_, COP_ABI_PE_, \
-                  COP_ABI_CH_)
+                  COP_ABI_CHIN_)
 
 #ifdef __cplusplus
 extern "C" {

@@ -25,9 +25,14 @@
  *     BYTE, tMsgTyp a BYTE, ...). tCopKernel stays a C enum: functions
  *     return it (a 32-bit integer at the library edge) and no shared
  *     structure contains it.
- *  8. Single instance only: COP_MAX_INSTANCES must be 1. Every
- *     CCM_DECL_INSTANCE_HDL* / MCO_DECL_* / *_INSTANCE_* macro has its
- *     single-instance form, so CcmProcess() takes no argument.
+ *  8. COP_MAX_INSTANCES (1..8) decides the form of every prototype, as in
+ *     the original's instdef.h: with 1, every CCM_DECL_INSTANCE_HDL* /
+ *     MCO_DECL_* / *_INSTANCE_* macro is empty (CcmProcess() takes no
+ *     argument); with more, every Ccm* function and every callback takes
+ *     the BYTE handle first (CcmProcess(InstanceHandle)), CcmInitCANopen
+ *     a tCopInstanceHdl* out-parameter, the module functions (Srdo*,
+ *     SdocGetTransmittedBytes) and the driver (Cdrv*) a void* instance
+ *     pointer. The library is built from the same copcfg.h.
  *  9. The application's copcfg.h is included first (like the original
  *     cop.h does), then copdef.h fills in every switch it leaves out.
  *
@@ -257,8 +262,8 @@ COP_STATIC_ASSERT(sizeof(BYTE) == 1, BYTE_must_be_8_bits);
 /* 1a. Configuration checks and instance macros (instdef.h)                 */
 /* ======================================================================== */
 
-#if (COP_MAX_INSTANCES != 1)
-#error "COP_MAX_INSTANCES must be 1: this library is a single-instance build (every Ccm* function addresses the one stack instance)"
+#if (COP_MAX_INSTANCES < 1) || (COP_MAX_INSTANCES > 8)
+#error "COP_MAX_INSTANCES must be 1..8 (one stack instance per CAN controller)"
 #endif
 #if (COP_USE_SMALL_TIME != FALSE)
 #error "COP_USE_SMALL_TIME must be FALSE: tTime is a 32-bit count of 100 us ticks in this library (a 16-bit tTime saturates after 6.5 s and would change tCdrvMsg)"
@@ -293,6 +298,7 @@ typedef enum
     kStateUsed    = 0xFF
 } tInstState;
 
+#if (COP_MAX_INSTANCES == 1)
 /* Single-instance forms: no handle parameter anywhere. */
 #define CCM_DECL_INSTANCE_HDL           void
 #define CCM_DECL_INSTANCE_HDL_
@@ -309,6 +315,35 @@ typedef enum
 #define MCO_INSTANCE_PTR
 #define MCO_INSTANCE_PTR_
 #define MCO_INSTANCE_PARAM(a)
+#define MCO_INSTANCE_PARAM_(a)
+#define MCO_PTR_INSTANCE_PTR
+#define MCO_PTR_INSTANCE_PTR_
+#define MCO_ADDR_INSTANCE_PTR_
+#else
+/* Multi-instance forms (instdef.h): the handle of the CCM layer, the
+ * instance pointer of the module and driver layers. A module instance
+ * pointer (MCO_*) points to the BYTE that holds the instance's handle:
+ * SrdoAddInstance hands out such a pointer, and &bHandle works as well. */
+#define CCM_DECL_INSTANCE_HDL           tCopInstanceHdl InstanceHandle
+#define CCM_DECL_INSTANCE_HDL_          tCopInstanceHdl InstanceHandle,
+#define CCM_DECL_PTR_INSTANCE_HDL       tCopInstanceHdl MEM* pInstanceHandle
+#define CCM_DECL_PTR_INSTANCE_HDL_      tCopInstanceHdl MEM* pInstanceHandle,
+#define CCM_INSTANCE_HDL                InstanceHandle
+#define CCM_INSTANCE_HDL_               InstanceHandle,
+#define CCM_INSTANCE_PARAM(p)           p
+#define CCM_INSTANCE_PARAM_(p)          p,
+#define MCO_DECL_INSTANCE_PTR           void MEM* pInstance
+#define MCO_DECL_INSTANCE_PTR_          void MEM* pInstance,
+#define MCO_DECL_PTR_INSTANCE_PTR       void MEM* MEM* pInstancePtr
+#define MCO_DECL_PTR_INSTANCE_PTR_      void MEM* MEM* pInstancePtr,
+#define MCO_INSTANCE_PTR                pInstance
+#define MCO_INSTANCE_PTR_               pInstance,
+#define MCO_INSTANCE_PARAM(a)           (a)
+#define MCO_INSTANCE_PARAM_(a)          (a),
+#define MCO_PTR_INSTANCE_PTR            pInstancePtr
+#define MCO_PTR_INSTANCE_PTR_           pInstancePtr,
+#define MCO_ADDR_INSTANCE_PTR_          &pInstance,
+#endif
 
 /* Switches as defined/undefined names, for the conditional prototypes of
  * cop.h (generated; see cbindgen.toml [defines]). */

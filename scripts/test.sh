@@ -57,8 +57,8 @@ run_stage() {
         cargo run -q --example fault_injection -- --cycles 100000 --seed 0x5EED0304
         ;;
     header)
-        stage "cbindgen --verify (include/cop.h is up to date)"
-        cbindgen --quiet --config cbindgen.toml --crate cop --output include/cop.h --verify
+        stage "scripts/header.sh --verify (include/cop.h is up to date)"
+        scripts/header.sh --verify
         ;;
     c)
         stage "CMake build and CTest (ASan/UBSan)"

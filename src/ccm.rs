@@ -487,7 +487,7 @@ impl Stack {
     #[inline(never)]
     fn poll_front(&mut self, port: &mut impl CanPort, now: Ticks) -> Option<Event> {
         if self.phase == Phase::Overrun {
-            self.check_overrun(port);
+            self.check_overrun(port, now);
         }
         if self.phase == Phase::OverrunReport && (!self.report_overrun() || !self.queue.is_empty())
         {
@@ -499,13 +499,16 @@ impl Stack {
     /// Phase `Overrun`: identifiers changed outside a cycle, the driver's
     /// overrun and bus-off flags.
     #[inline(always)]
-    fn check_overrun(&mut self, port: &mut impl CanPort) {
+    fn check_overrun(&mut self, port: &mut impl CanPort, now: Ticks) {
         if core::mem::take(&mut self.resubscribe) {
             self.subscribe(port);
         }
         let status = port.status();
         if status.rx_overrun && self.connected {
             self.srdo.on_rx_overrun();
+        }
+        if status.rx_overrun_other && self.connected {
+            self.can_overrun(port, now);
         }
         // Followed once connected, so that a controller already bus-off
         // when the node connects counts at its first cycle.

@@ -187,8 +187,15 @@ pub enum Priority {
 /// The error flags of [`CanPort::status`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct PortStatus {
-    /// At least one received frame was lost since the last call.
+    /// At least one received frame was lost since the last call that can
+    /// have been an SRDO or GFC frame (a buffer those identifiers use, or a
+    /// loss the driver cannot place).
     pub rx_overrun: bool,
+    /// Received frames were lost since the last call, all of them from a
+    /// buffer that holds no SRDO or GFC identifier (the driver's low
+    /// buffer while SRDO and GFC are received in the high one): a CAN
+    /// overrun of the communication, not of the safety function.
+    pub rx_overrun_other: bool,
     /// The controller is bus-off.
     pub bus_off: bool,
 }
@@ -215,7 +222,7 @@ pub trait CanPort {
     fn status(&mut self) -> PortStatus {
         PortStatus {
             rx_overrun: self.take_rx_overrun(),
-            bus_off: false,
+            ..PortStatus::default()
         }
     }
 

@@ -46,6 +46,9 @@ struct Node {
     rx: VecDeque<RxFrame>,
     capacity: usize,
     overrun: bool,
+    /// Frames lost from a buffer without SRDO or GFC identifiers
+    /// ([`SimBus::raise_other_overrun`]).
+    overrun_other: bool,
     tx_refuse: usize,
     bus_off: bool,
 }
@@ -171,6 +174,7 @@ impl SimBus {
             rx: VecDeque::new(),
             capacity,
             overrun: false,
+            overrun_other: false,
             tx_refuse: 0,
             bus_off: false,
         });
@@ -211,6 +215,15 @@ impl SimBus {
     pub fn refuse_tx(&self, node: usize, n: usize) {
         if let Some(x) = self.0.borrow_mut().nodes.get_mut(node) {
             x.tx_refuse = n;
+        }
+    }
+
+    /// Reports at `node`'s next status read a loss of frames that no SRDO
+    /// or GFC uses (a driver's low-buffer overrun while those identifiers
+    /// are received in the high buffer).
+    pub fn raise_other_overrun(&self, node: usize) {
+        if let Some(x) = self.0.borrow_mut().nodes.get_mut(node) {
+            x.overrun_other = true;
         }
     }
 
@@ -346,6 +359,7 @@ impl CanPort for SimPort {
             .get_mut(self.node)
             .map_or(PortStatus::default(), |n| PortStatus {
                 rx_overrun: std::mem::take(&mut n.overrun),
+                rx_overrun_other: std::mem::take(&mut n.overrun_other),
                 bus_off: n.bus_off,
             })
     }

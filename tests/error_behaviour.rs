@@ -311,3 +311,25 @@ fn a_controller_bus_off_before_the_node_connects_counts_at_its_first_cycle() {
     assert_eq!(stack.nmt_state(), NmtState::Stopped);
     assert_eq!(events, vec![Event::Nmt(NmtEvent::EnterStopped)]);
 }
+
+/// A loss of frames that no SRDO or GFC uses (the driver's low buffer) is a
+/// CAN overrun of the communication: emergency 0x8110 with the error
+/// register's generic and communication bits (CiA 301 table 21, 7.5.2.2),
+/// no SRDO error and no state change.
+#[test]
+fn a_low_buffer_overrun_is_a_can_overrun_emergency() {
+    let mut net = Net::supervising(0, NmtState::Operational);
+    let a = net.a.port.node();
+    net.bus.raise_other_overrun(a);
+    net.step();
+    let emcy = net.frames(0x80 + u32::from(ID_A));
+    assert_eq!(
+        emcy,
+        vec![(emcy[0].0, vec![0x10, 0x81, 0x11, 0, 0, 0, 0, 0])]
+    );
+    assert_eq!(net.a.stack.nmt_state(), NmtState::Operational);
+    assert!(net.a.supervision_events().is_empty());
+    // Taken once: the next cycles send nothing more.
+    net.run(5);
+    assert_eq!(net.frames(0x80 + u32::from(ID_A)).len(), 1);
+}

@@ -14,7 +14,12 @@
  *    bytes, eight data bytes. Header fields are written little-endian,
  *    whatever the host, so the files are the same on every machine.
  *  - candump -l: "(1700000000.000100) can0 101#0102FEFD", 3 or 8 hex
- *    digits of identifier, "#R<len>" for a remote frame.
+ *    digits of identifier, "#R<len>" for a remote frame; the interface
+ *    names the bus (can0, can1, ... as SimSetBus chose).
+ *
+ * With several buses the pcap file holds the frames of all of them (a
+ * SocketCAN record has no interface field); the candump log tells them
+ * apart.
  *
  * Timestamps are the simulated clock: tick 0 of the first scenario is
  * 1700000000 s, one tick is 100 us, and the capture clock only moves
@@ -194,12 +199,12 @@ void SimCaptureFrame (CONST tSimFrame* pFrame_p)
     {
         if ((pFrame_p->m_dwId & (DWORD) CAN_FRAME_FORMAT_MASK) != 0)
         {
-            fprintf(pCandump_g, "(%lu.%06lu) can0 %08lX#", dwSec, dwUsec,
+            fprintf(pCandump_g, "(%lu.%06lu) can%u %08lX#", dwSec, dwUsec, (unsigned) pFrame_p->m_bBus,
                     (unsigned long) (pFrame_p->m_dwId & 0x1FFFFFFFUL));
         }
         else
         {
-            fprintf(pCandump_g, "(%lu.%06lu) can0 %03lX#", dwSec, dwUsec,
+            fprintf(pCandump_g, "(%lu.%06lu) can%u %03lX#", dwSec, dwUsec, (unsigned) pFrame_p->m_bBus,
                     (unsigned long) (pFrame_p->m_dwId & 0x7FFUL));
         }
         if (pFrame_p->m_bRtr)

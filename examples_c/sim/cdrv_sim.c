@@ -43,6 +43,8 @@ typedef struct
     tSimQueue     m_RxLow;
     tCdrvStatus   m_Status;
     unsigned      m_uRefuseTx;
+    BYTE          m_bBus;                   /* the bus (CAN line) of its controller */
+    int           m_fSilent;                /* sends nothing (SimSilence) */
 } tSimNode;
 
 static tSimNode  aSimNode_g[SIM_MAX_NODES];
@@ -54,6 +56,11 @@ static unsigned  uSimLogHead_g;
 static unsigned  uSimLogCount_g;
 static int       fSimDropArmed_g;
 static DWORD     dwSimDropId_g;
+static int       fSimCorruptArmed_g;
+static DWORD     dwSimCorruptId_g;
+static BYTE      bSimCorruptXor_g;
+static BYTE      abSimBusOfNode_g[SIM_MAX_NODES];   /* kept across CdrvInit */
+static BYTE      bSimInjectBus_g;
 
 static DWORD SimIdOfMsg (CONST tCdrvMsg* pMsg_p)
 {
@@ -135,11 +142,11 @@ int SimFormatCandump (CONST tSimFrame* pFrame_p, char* pszLine_p, unsigned uSize
     }
     if (SimIsExtended(pFrame_p->m_dwId))
     {
-        iLen = sprintf(pszLine_p, "  can0  %08lX   [%u] ", (unsigned long) (pFrame_p->m_dwId & 0x1FFFFFFFUL), (unsigned) pFrame_p->m_bDlc);
+        iLen = sprintf(pszLine_p, "  can%u  %08lX   [%u] ", (unsigned) pFrame_p->m_bBus, (unsigned long) (pFrame_p->m_dwId & 0x1FFFFFFFUL), (unsigned) pFrame_p->m_bDlc);
     }
     else
     {
-        iLen = sprintf(pszLine_p, "  can0  %03lX   [%u] ", (unsigned long) pFrame_p->m_dwId, (unsigned) pFrame_p->m_bDlc);
+        iLen = sprintf(pszLine_p, "  can%u  %03lX   [%u] ", (unsigned) pFrame_p->m_bBus, (unsigned long) pFrame_p->m_dwId, (unsigned) pFrame_p->m_bDlc);
     }
     if (pFrame_p->m_bRtr)
     {
@@ -206,7 +213,7 @@ static int SimDeliver (CONST tSimFrame* pFrame_p)
         tSimNode* pNode = &aSimNode_g[n];
         BYTE bPrio;
 
-        if (!pNode->m_fUsed || (n == pFrame_p->m_bSender))
+        if (!pNode->m_fUsed || (n == pFrame_p->m_bSender) || (pNode->m_bBus != pFrame_p->m_bBus))
         {
             continue;
         }
@@ -251,6 +258,11 @@ static int SimBus (tSimFrame* pFrame_p)
         fSimDropArmed_g = 0;
         return 0;
     }
+    if (fSimCorruptArmed_g && (pFrame_p->m_dwId == dwSimCorruptId_g) && (pFrame_p->m_bDlc > 0))
+    {
+        fSimCorruptArmed_g = 0;
+        pFrame_p->m_abData[0] ^= bSimCorruptXor_g;
+    }
     SimTrace(pFrame_p);
 #if defined(SIM_CAPTURE) && (SIM_CAPTURE != 0)
     SimCaptureFrame(pFrame_p);
@@ -282,7 +294,12 @@ void SimReset (void)
     uSimLogCount_g = 0;
     fSimDropArmed_g = 0;
     dwSimDropId_g = 0;
+    fSimCorruptArmed_g = 0;
+    memset(abSimBusOfNode_g, 0, sizeof(abSimBusOfNode_g));
+    bSimInjectBus_g = 0;
+#if (COP_MAX_INSTANCES == 1)
     (void) CopSimSelectInstance(0);
+#endif
 #if defined(SIM_CAPTURE) && (SIM_CAPTURE != 0)
     SimCaptureAtReset();
 #endif
@@ -296,7 +313,11 @@ tCopKernel SimSelectNode (BYTE bNode_p)
     {
         return kCopIllegalInstance;
     }
+#if (COP_MAX_INSTANCES == 1)
     Ret = (tCopKernel) CopSimSelectInstance(bNode_p);
+#else
+    Ret = kCopSuccessful;       /* the handles address the instances */
+#endif
     if (Ret == kCopSuccessful)
     {
         bSimSelected_g = bNode_p;
@@ -341,6 +362,7 @@ int SimInject (DWORD dwId_p, BYTE bRtr_p, BYTE bDlc_p, CONST BYTE* pbData_p)
         memcpy(Frame.m_abData, pbData_p, bDlc_p);
     }
     Frame.m_bSender = SIM_EXTERNAL_NODE;
+    Frame.m_bBus = bSimInjectBus_g;
     return SimBus(&Frame);
 }
 
@@ -407,6 +429,35 @@ void SimRaiseStatus (BYTE bNode_p, WORD wBits_p)
     }
 }
 
+void SimSetBus (BYTE bNode_p, BYTE bBus_p)
+{
+    if (bNode_p < SIM_MAX_NODES)
+    {
+        abSimBusOfNode_g[bNode_p] = bBus_p;
+        aSimNode_g[bNode_p].m_bBus = bBus_p;
+    }
+}
+
+void SimSetInjectBus (BYTE bBus_p)
+{
+    bSimInjectBus_g = bBus_p;
+}
+
+void SimSilence (BYTE bNode_p, int fSilent_p)
+{
+    if (bNode_p < SIM_MAX_NODES)
+    {
+        aSimNode_g[bNode_p].m_fSilent = fSilent_p;
+    }
+}
+
+void SimCorruptNextId (DWORD dwId_p, BYTE bXor_p)
+{
+    fSimCorruptArmed_g = 1;
+    dwSimCorruptId_g = SimIsExtended(dwId_p) ? dwId_p : (dwId_p & 0x7FFUL);
+    bSimCorruptXor_g = bXor_p;
+}
+
 void SimDropNextId (DWORD dwId_p)
 {
     fSimDropArmed_g = 1;
@@ -458,7 +509,17 @@ static tSimNode* SimCurrent (void)
     return &aSimNode_g[bSimSelected_g];
 }
 
-tCopKernel PUBLIC CdrvInit (tCdrvInitParam MEM* pInitParam_p)
+/* The controller a driver call acts on: in a multi-instance build the one
+ * its instance pointer names (CdrvInit returned it), else the selected
+ * node's. */
+#if (COP_MAX_INSTANCES > 1)
+#define SIM_THIS_NODE() ((tSimNode*) pInstance)
+#else
+#define SIM_THIS_NODE() SimCurrent()
+#endif
+
+/* Starts the selected node's controller (CdrvInit and CdrvAddInstance). */
+static tCopKernel SimInitNode (tCdrvInitParam MEM* pInitParam_p, tSimNode** ppNode_p)
 {
     tSimNode* pNode = SimCurrent();
 
@@ -473,37 +534,63 @@ tCopKernel PUBLIC CdrvInit (tCdrvInitParam MEM* pInitParam_p)
     memset(pNode, 0, sizeof(*pNode));
     SimQueueInit(&pNode->m_RxHigh, pInitParam_p->m_RxBuffHigh.m_MaxEntries);
     SimQueueInit(&pNode->m_RxLow, pInitParam_p->m_RxBuffLow.m_MaxEntries);
+    pNode->m_bBus = abSimBusOfNode_g[bSimSelected_g];
     pNode->m_fUsed = 1;
+    *ppNode_p = pNode;
     return kCopSuccessful;
 }
 
-tCopKernel PUBLIC CdrvAddInstance (tCdrvInitParam MEM* pInitParam_p)
+/* In a multi-instance build the node is the one selected (SimSelectNode)
+ * when the library calls CdrvInit / CdrvAddInstance; its address is the
+ * driver's instance pointer. */
+tCopKernel PUBLIC CdrvInit (MCO_DECL_PTR_INSTANCE_PTR_ tCdrvInitParam MEM* pInitParam_p)
 {
-    return CdrvInit(pInitParam_p);
+    tSimNode* pNode = NULL;
+    tCopKernel Ret = SimInitNode(pInitParam_p, &pNode);
+
+#if (COP_MAX_INSTANCES > 1)
+    if (pInstancePtr == NULL)
+    {
+        return kCopInvalidInstanceParam;
+    }
+    *pInstancePtr = pNode;
+#endif
+    (void) pNode;
+    return Ret;
 }
 
-tCopKernel PUBLIC CdrvDeleteInstance (void)
+tCopKernel PUBLIC CdrvAddInstance (MCO_DECL_PTR_INSTANCE_PTR_ tCdrvInitParam MEM* pInitParam_p)
 {
-    tSimNode* pNode = SimCurrent();
+    return CdrvInit(MCO_PTR_INSTANCE_PTR_ pInitParam_p);
+}
+
+tCopKernel PUBLIC CdrvDeleteInstance (MCO_DECL_INSTANCE_PTR)
+{
+    tSimNode* pNode = SIM_THIS_NODE();
+    BYTE bBus = pNode->m_bBus;
 
     if (!pNode->m_fUsed)
     {
         return kCopIllegalInstance;
     }
     memset(pNode, 0, sizeof(*pNode));
+    pNode->m_bBus = bBus;
     return kCopSuccessful;
 }
 
-tCopKernel PUBLIC CdrvSetBaudrate (CONST void ROM* pBdiTable_p, WORD wSizeOfBdiTab_p, BYTE bBdiIndex_p)
+tCopKernel PUBLIC CdrvSetBaudrate (MCO_DECL_INSTANCE_PTR_ CONST void ROM* pBdiTable_p, WORD wSizeOfBdiTab_p, BYTE bBdiIndex_p)
 {
+#if (COP_MAX_INSTANCES > 1)
+    (void) pInstance;
+#endif
     (void) pBdiTable_p;
     (void) wSizeOfBdiTab_p;
     return (bBdiIndex_p <= kBdi10kBaud) ? kCopSuccessful : kCopCdrvIllegalBdi;
 }
 
-tCopKernel PUBLIC CdrvReset (tCdrvResetCode ResetCode_p)
+tCopKernel PUBLIC CdrvReset (MCO_DECL_INSTANCE_PTR_ tCdrvResetCode ResetCode_p)
 {
-    tSimNode* pNode = SimCurrent();
+    tSimNode* pNode = SIM_THIS_NODE();
 
     if ((ResetCode_p & kResetRxBuffHigh) != 0)
     {
@@ -522,34 +609,37 @@ tCopKernel PUBLIC CdrvReset (tCdrvResetCode ResetCode_p)
     return kCopSuccessful;
 }
 
-tCopKernel PUBLIC CdrvClearRtr (BYTE bChannel_p)
+tCopKernel PUBLIC CdrvClearRtr (MCO_DECL_INSTANCE_PTR_ BYTE bChannel_p)
 {
+#if (COP_MAX_INSTANCES > 1)
+    (void) pInstance;
+#endif
     (void) bChannel_p;
     return kCopSuccessful;
 }
 
-tCopKernel PUBLIC CdrvDefineCanId (tCdrvMsg MEM* pCanMsg_p)
+tCopKernel PUBLIC CdrvDefineCanId (MCO_DECL_INSTANCE_PTR_ tCdrvMsg MEM* pCanMsg_p)
 {
     if (pCanMsg_p == NULL)
     {
         return kCopCdrvInvalidParam;
     }
-    return SimSetFilter(SimCurrent(), SimIdOfMsg(pCanMsg_p),
+    return SimSetFilter(SIM_THIS_NODE(), SimIdOfMsg(pCanMsg_p),
                         (BYTE) (((pCanMsg_p->m_MsgType & kMtbHighPrio) != 0) ? SIM_FILTER_HIGH : SIM_FILTER_LOW));
 }
 
-tCopKernel PUBLIC CdrvUndefineCanId (tCdrvMsg MEM* pCanMsg_p)
+tCopKernel PUBLIC CdrvUndefineCanId (MCO_DECL_INSTANCE_PTR_ tCdrvMsg MEM* pCanMsg_p)
 {
     if (pCanMsg_p == NULL)
     {
         return kCopCdrvInvalidParam;
     }
-    return SimSetFilter(SimCurrent(), SimIdOfMsg(pCanMsg_p), SIM_FILTER_NONE);
+    return SimSetFilter(SIM_THIS_NODE(), SimIdOfMsg(pCanMsg_p), SIM_FILTER_NONE);
 }
 
-tCopKernel PUBLIC CdrvWriteMsg (tCdrvMsg MEM* pCanMsg_p)
+tCopKernel PUBLIC CdrvWriteMsg (MCO_DECL_INSTANCE_PTR_ tCdrvMsg MEM* pCanMsg_p)
 {
-    tSimNode* pNode = SimCurrent();
+    tSimNode* pNode = SIM_THIS_NODE();
     tSimFrame Frame;
 
     if (pCanMsg_p == NULL)
@@ -565,19 +655,24 @@ tCopKernel PUBLIC CdrvWriteMsg (tCdrvMsg MEM* pCanMsg_p)
         pNode->m_uRefuseTx--;
         return ((pCanMsg_p->m_MsgType & kMtbHighPrio) != 0) ? kCopCdrvTxBuffHighOverrun : kCopCdrvTxBuffLowOverrun;
     }
+    if (pNode->m_fSilent)
+    {
+        return kCopSuccessful;      /* taken, never on the bus */
+    }
     memset(&Frame, 0, sizeof(Frame));
     Frame.m_dwId = SimIdOfMsg(pCanMsg_p);
     Frame.m_bRtr = (BYTE) (((pCanMsg_p->m_MsgType & kMtbRtr) != 0) ? 1 : 0);
     Frame.m_bDlc = (BYTE) ((pCanMsg_p->m_bSize > 8) ? 8 : pCanMsg_p->m_bSize);
     memcpy(Frame.m_abData, pCanMsg_p->m_bData, sizeof(Frame.m_abData));
-    Frame.m_bSender = bSimSelected_g;
+    Frame.m_bSender = (BYTE) (pNode - aSimNode_g);
+    Frame.m_bBus = pNode->m_bBus;
     (void) SimBus(&Frame);
     return kCopSuccessful;
 }
 
-tCopKernel PUBLIC CdrvReadMsg (tCdrvMsg MEM* MEM* ppCanMsg_p)
+tCopKernel PUBLIC CdrvReadMsg (MCO_DECL_INSTANCE_PTR_ tCdrvMsg MEM* MEM* ppCanMsg_p)
 {
-    tSimNode* pNode = SimCurrent();
+    tSimNode* pNode = SIM_THIS_NODE();
 
     if (ppCanMsg_p == NULL)
     {
@@ -607,9 +702,9 @@ static int SimQueueRelease (tSimQueue* pQueue_p, CONST tCdrvMsg* pMsg_p)
     return 1;
 }
 
-tCopKernel PUBLIC CdrvReleaseMsg (tCdrvMsg MEM* pCanMsg_p)
+tCopKernel PUBLIC CdrvReleaseMsg (MCO_DECL_INSTANCE_PTR_ tCdrvMsg MEM* pCanMsg_p)
 {
-    tSimNode* pNode = SimCurrent();
+    tSimNode* pNode = SIM_THIS_NODE();
 
     if (SimQueueRelease(&pNode->m_RxHigh, pCanMsg_p) || SimQueueRelease(&pNode->m_RxLow, pCanMsg_p))
     {
@@ -618,35 +713,46 @@ tCopKernel PUBLIC CdrvReleaseMsg (tCdrvMsg MEM* pCanMsg_p)
     return kCopCdrvInvalidParam;
 }
 
-tCopKernel PUBLIC CdrvUpdateMsg (tCdrvMsg MEM* pCanMsg_p)
+tCopKernel PUBLIC CdrvUpdateMsg (MCO_DECL_INSTANCE_PTR_ tCdrvMsg MEM* pCanMsg_p)
 {
+#if (COP_MAX_INSTANCES > 1)
+    (void) pInstance;
+#endif
     return (pCanMsg_p == NULL) ? kCopCdrvInvalidParam : kCopSuccessful;
 }
 
-tCopKernel PUBLIC CdrvInterruptHandler (tCdrvIsrType IsrType_p)
+tCopKernel PUBLIC CdrvInterruptHandler (MCO_DECL_INSTANCE_PTR_ tCdrvIsrType IsrType_p)
 {
+#if (COP_MAX_INSTANCES > 1)
+    (void) pInstance;
+#endif
     (void) IsrType_p;
     return kCopSuccessful;
 }
 
-tCopKernel PUBLIC CdrvGetStatus (tCdrvStatus MEM* pStatus_p)
+tCopKernel PUBLIC CdrvGetStatus (MCO_DECL_INSTANCE_PTR_ tCdrvStatus MEM* pStatus_p)
 {
     if (pStatus_p == NULL)
     {
         return kCopCdrvInvalidParam;
     }
-    *pStatus_p = SimCurrent()->m_Status;
+    *pStatus_p = SIM_THIS_NODE()->m_Status;
     return kCopSuccessful;
 }
 
-tCopKernel PUBLIC CdrvResetStatus (tCdrvStatus Status_p)
+tCopKernel PUBLIC CdrvResetStatus (MCO_DECL_INSTANCE_PTR_ tCdrvStatus Status_p)
 {
-    SimCurrent()->m_Status = (tCdrvStatus) (SimCurrent()->m_Status & (tCdrvStatus) ~Status_p);
+    tSimNode* pNode = SIM_THIS_NODE();
+
+    pNode->m_Status = (tCdrvStatus) (pNode->m_Status & (tCdrvStatus) ~Status_p);
     return kCopSuccessful;
 }
 
-tCopKernel PUBLIC CdrvGetDiagnostic (tCdrvDiagnostic MEM* pDiagnostic_p)
+tCopKernel PUBLIC CdrvGetDiagnostic (MCO_DECL_INSTANCE_PTR_ tCdrvDiagnostic MEM* pDiagnostic_p)
 {
+#if (COP_MAX_INSTANCES > 1)
+    (void) pInstance;
+#endif
     (void) pDiagnostic_p;
     return kCopSuccessful;
 }

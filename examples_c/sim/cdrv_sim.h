@@ -6,10 +6,16 @@
  * bus that exists only in memory, so that an unchanged application, its
  * objdict.h and this library run on a host, one process, no hardware:
  *
- *  - up to SIM_MAX_NODES nodes. Each node is one instance of the library
- *    (host builds keep several, see CopSimSelectInstance). SimSelectNode(n)
- *    makes node n current: the Ccm* calls that follow address its stack and
- *    the Cdrv* calls the stack makes act on its controller;
+ *  - up to SIM_MAX_NODES nodes. Each node is one instance of the library.
+ *    In a single-instance build (host builds keep several, see
+ *    CopSimSelectInstance) SimSelectNode(n) makes node n current: the Ccm*
+ *    calls that follow address its stack and the Cdrv* calls the stack
+ *    makes act on its controller. In a multi-instance build
+ *    (COP_MAX_INSTANCES > 1) the Ccm* calls name their instance by handle;
+ *    SimSelectNode(n) names the controller the next CcmInitCANopen gives
+ *    its instance (CdrvInit / CdrvAddInstance return node n's address as
+ *    the driver's instance pointer), and every later Cdrv* call acts on the
+ *    controller of its instance pointer;
  *  - per node a high- and a low-priority receive queue with the capacities
  *    the dictionary gave CdrvInit (CDRV_MAX_RX_BUFF_ENTRIES_HIGH/LOW, at
  *    most SIM_QUEUE_MAX). A node receives only the identifiers it defined
@@ -79,6 +85,7 @@ typedef struct
     BYTE  m_bDlc;           /* 0..8 */
     BYTE  m_abData[8];
     BYTE  m_bSender;        /* node index, or SIM_EXTERNAL_NODE */
+    BYTE  m_bBus;           /* the bus it was on (SimSetBus), 0 by default */
     DWORD m_dwTick;         /* TgtGetTickCount() when it was on the bus */
 } tSimFrame;
 
@@ -129,6 +136,15 @@ int SimCapture (const char* pszPcap_p, const char* pszCandump_p);
 void SimRefuseTx (BYTE bNode_p, unsigned uCount_p);   /* next uCount_p CdrvWriteMsg of the node fail */
 void SimDropNextId (DWORD dwId_p);                     /* next frame with this identifier is lost */
 void SimRaiseStatus (BYTE bNode_p, WORD wBits_p);      /* sets tCdrvStatus bits (kCdrvBusOff, ...); CdrvResetStatus clears */
+void SimSilence (BYTE bNode_p, int fSilent_p);         /* the node's controller sends nothing (a silent channel) */
+void SimCorruptNextId (DWORD dwId_p, BYTE bXor_p);     /* next frame with this identifier has data byte 0 XORed */
+
+/* Several buses (CAN lines): a node is on bus 0 unless SimSetBus puts it on
+ * another (before its CdrvInit); frames reach only the nodes of their bus,
+ * and the trace names it (can0, can1, ...). SimInject sends on the bus
+ * SimSetInjectBus chose (0 after SimReset). */
+void SimSetBus (BYTE bNode_p, BYTE bBus_p);
+void SimSetInjectBus (BYTE bBus_p);
 
 /* Inspection (tests). */
 int      SimIsIdDefined (BYTE bNode_p, DWORD dwId_p); /* 0 undefined, 1 low, 2 high priority */

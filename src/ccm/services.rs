@@ -151,18 +151,35 @@ impl Stack {
     }
 
     /// The life guarding event: emergency 0x8130 with the error register's
-    /// generic and communication bits, recorded in 0x1001 / 0x1003 and
-    /// sent (in STOPPED, where EMCY is not sent, only recorded).
+    /// generic and communication bits ([`Stack::communication_emergency`]),
+    /// then the reaction of 0x1029.
     pub(super) fn poll_life_guarding(&mut self, port: &mut impl CanPort, now: Ticks) {
         if !self.connected || !self.lgs.poll(now, self.hb.period_ms() > 0) {
             return;
         }
+        self.communication_emergency(port, now, lgs::EMCY_LIFE_GUARD);
+        self.communication_error();
+    }
+
+    /// The driver lost received frames of identifiers that no SRDO or GFC
+    /// uses (`PortStatus::rx_overrun_other`): emergency 0x8110, "CAN
+    /// overrun (objects lost)" (CiA 301 table 21), with the error
+    /// register's generic and communication bits. No SRDO error: the
+    /// safety function lost nothing.
+    pub(super) fn can_overrun(&mut self, port: &mut impl CanPort, now: Ticks) {
+        self.communication_emergency(port, now, emcp::EMCY_CAN_OVERRUN);
+    }
+
+    /// An emergency of a communication error with the error register's
+    /// generic and communication bits, recorded in 0x1001 / 0x1003 and sent
+    /// (in STOPPED, where EMCY is not sent, only recorded).
+    fn communication_emergency(&mut self, port: &mut impl CanPort, now: Ticks, code: u16) {
         let register = self
             .od
             .read_uint(ERROR_REGISTER_INDEX, 0)
             .map_or(0, |v| v as u8);
         let e = Emergency {
-            code: lgs::EMCY_LIFE_GUARD,
+            code,
             register: register | lgs::ERROR_REGISTER_BITS,
             manufacturer: [0; 5],
         };
@@ -173,7 +190,6 @@ impl Stack {
             // frame; the error is recorded in 0x1001 / 0x1003 either way.
             let _ = self.emcy.send(&self.od, port, now, e);
         }
-        self.communication_error();
     }
 
     /// A communication error of this node (heartbeat producer lost, life

@@ -11,6 +11,8 @@ use crate::port::{CanId, CanPort, Priority, Ticks};
 use crate::wire::emcy::{self, Emergency};
 use crate::wire::pdo::{COB_INVALID, COB_NO_RTR, check_identifier};
 
+/// Emergency error code "CAN overrun (objects lost)" (CiA 301 table 21).
+pub const EMCY_CAN_OVERRUN: u16 = 0x8110;
 /// Error register.
 pub const ERROR_REGISTER_INDEX: u16 = 0x1001;
 /// Pre-defined error field.

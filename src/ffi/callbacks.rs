@@ -11,10 +11,11 @@
 use core::ffi::c_void;
 use core::sync::atomic::{AtomicPtr, Ordering};
 
+use super::instance::app_call;
 use super::types::{
-    WORD, tAppEmccEventCallback, tAppHbcEventCallback, tAppNmtmEventCallback, tCcmErrorCallback,
-    tCcmNmtEventCallback, tCopKernel, tEmcParam, tPdoCallback, tSdocCbFinishParam, tSdocCbFinished,
-    tSrdoAppCallbacks,
+    tAppEmccEventCallback, tAppHbcEventCallback, tAppNmtmEventCallback, tCcmErrorCallback,
+    tCcmNmtEventCallback, tEmcParam, tPdoCallback, tProgMonCallback, tSdocCbFinishParam,
+    tSdocCbFinished, tSrdoAppCallbacks, tSrdoEventCallback,
 };
 use crate::config::{PDO_MAX_RXPDO_IN_OBD, PDO_MAX_TXPDO_IN_OBD};
 use crate::error::CopKernel;
@@ -49,9 +50,9 @@ pub struct Callbacks {
 #[derive(Clone, Copy)]
 pub(crate) enum Pending {
     /// `AppSrdoEvent(commu_index)`.
-    SrdoEvent(Option<unsafe extern "C" fn(WORD) -> tCopKernel>, u16),
+    SrdoEvent(tSrdoEventCallback, u16),
     /// `AppProgMonEvent(event)`.
-    ProgMon(Option<unsafe extern "C" fn(u32) -> tCopKernel>, u32),
+    ProgMon(tProgMonCallback, u32),
     /// Any other event, with all the callbacks ([`dispatch`]).
     Other(Event, Callbacks),
 }
@@ -79,12 +80,12 @@ impl Pending {
         match self {
             Pending::SrdoEvent(Some(cb), idx) => {
                 // SAFETY: AppSrdoEvent of the application (objdef.h).
-                unsafe { cb(idx) };
+                unsafe { app_call!(cb, instance; idx) };
                 None
             }
             Pending::ProgMon(Some(cb), e) => {
                 // SAFETY: AppProgMonEvent of the application (objdef.h).
-                unsafe { cb(e) };
+                unsafe { app_call!(cb, instance; e) };
                 None
             }
             Pending::SrdoEvent(None, _) | Pending::ProgMon(None, _) => None,
@@ -113,7 +114,7 @@ pub(crate) fn dispatch(ev: Event, cbs: Callbacks, instance: usize) -> Option<Cop
         Event::Nmt(e) => {
             if let Some(cb) = cbs.nmt {
                 // SAFETY: the application's NMT callback from tCcmInitParam.
-                let ret = unsafe { cb(e as u32) };
+                let ret = unsafe { app_call!(cb, instance; e as u32) };
                 if ret != 0 {
                     return Some(CopKernel::NmtStateError);
                 }
@@ -122,37 +123,37 @@ pub(crate) fn dispatch(ev: Event, cbs: Callbacks, instance: usize) -> Option<Cop
         Event::SrdoEvent(idx) => {
             if let Some(cb) = srdo.and_then(|c| c.m_fpSrdoEvent) {
                 // SAFETY: AppSrdoEvent of the application (objdef.h).
-                unsafe { cb(idx) };
+                unsafe { app_call!(cb, instance; idx) };
             }
         }
         Event::SrdoError(idx, code) => {
             if let Some(cb) = srdo.and_then(|c| c.m_fpSrdoError) {
                 // SAFETY: AppSrdoError of the application (objdef.h).
-                unsafe { cb(idx, code.code()) };
+                unsafe { app_call!(cb, instance; idx, code.code()) };
             }
         }
         Event::Gfc => {
             if let Some(cb) = srdo.and_then(|c| c.m_fpGfcEvent) {
                 // SAFETY: AppGfcEvent of the application (objdef.h).
-                unsafe { cb() };
+                unsafe { app_call!(cb, instance;) };
             }
         }
         Event::ProgMon(e) => {
             if let Some(cb) = srdo.and_then(|c| c.m_fpProgMonEvent) {
                 // SAFETY: AppProgMonEvent of the application (objdef.h).
-                unsafe { cb(e as u32) };
+                unsafe { app_call!(cb, instance; e as u32) };
             }
         }
         Event::Hbc(node, e) => {
             if let Some(cb) = cbs.hbc {
                 // SAFETY: the callback registered with CcmInitHbcEx.
-                unsafe { cb(node, e as u32) };
+                unsafe { app_call!(cb, instance; node, e as u32) };
             }
         }
         Event::Nmtm(node, e) => {
             if let Some(cb) = cbs.nmtm {
                 // SAFETY: the callback registered with CcmInitNmtmEx.
-                unsafe { cb(node, e as u32) };
+                unsafe { app_call!(cb, instance; node, e as u32) };
             }
         }
         Event::SdocFinished {
@@ -169,10 +170,10 @@ pub(crate) fn dispatch(ev: Event, cbs: Callbacks, instance: usize) -> Option<Cop
                 };
                 // SAFETY: the finish callback given with CcmSdocStartTransfer;
                 // `p` lives for the call.
-                unsafe { cb(&mut p) };
+                unsafe { app_call!(cb, instance; &mut p) };
             }
         }
-        Event::Emcc(node, e) => emcc(node, e, cbs.emcc),
+        Event::Emcc(node, e) => emcc(node, e, cbs.emcc, instance),
         Event::Pdo(commu_index) => pdo(commu_index, instance),
     }
     None
@@ -183,7 +184,7 @@ pub(crate) fn dispatch(ev: Event, cbs: Callbacks, instance: usize) -> Option<Cop
 /// manufacturer-specific bytes of the frame; `m_wAdditionalInfo` has no
 /// counterpart in the frame and is 0. The structure lives for the call.
 /// Without a callback (`CcmInitEmcc`) the emergency is not reported.
-fn emcc(node: u8, e: Emergency, cb: tAppEmccEventCallback) {
+fn emcc(node: u8, e: Emergency, cb: tAppEmccEventCallback, instance: usize) {
     let Some(cb) = cb else {
         return;
     };
@@ -195,7 +196,7 @@ fn emcc(node: u8, e: Emergency, cb: tAppEmccEventCallback) {
     };
     // SAFETY: the callback registered with CcmInitEmccEx; `p` lives for
     // the call.
-    unsafe { cb(node, &mut p) };
+    unsafe { app_call!(cb, instance; node, &mut p) };
 }
 
 /// PDO callbacks: one slot per RPDO (0x1400+n at n) and TPDO (0x1800+n at
@@ -228,6 +229,17 @@ pub(crate) fn set_pdo(commu_index: u16, cb: tPdoCallback, instance: usize) {
     }
 }
 
+/// The function type of a [`tPdoCallback`].
+type tPdoCallbackFn = <tPdoCallback as OptionFn>::Fn;
+
+/// The function type inside an `Option` of a function pointer.
+trait OptionFn {
+    type Fn;
+}
+impl<F> OptionFn for Option<F> {
+    type Fn = F;
+}
+
 fn pdo_callback(commu_index: u16, instance: usize) -> tPdoCallback {
     let slot = pdo_slot(commu_index)?;
     let p = PDO_CALLBACKS
@@ -239,9 +251,7 @@ fn pdo_callback(commu_index: u16, instance: usize) -> tPdoCallback {
     }
     // SAFETY: non-NULL entries were stored by `set_pdo` from a
     // tPdoCallback function pointer of the application.
-    Some(unsafe {
-        core::mem::transmute::<*mut c_void, unsafe extern "C" fn(WORD) -> tCopKernel>(p)
-    })
+    Some(unsafe { core::mem::transmute::<*mut c_void, tPdoCallbackFn>(p) })
 }
 
 /// Calls the PDO's callback for `Event::Pdo`. Its return value is not
@@ -250,12 +260,13 @@ fn pdo(commu_index: u16, instance: usize) {
     if let Some(cb) = pdo_callback(commu_index, instance) {
         // SAFETY: the application's tPdoCallback given with CcmDefinePdoTab
         // or CcmDefineStaticPdoTab.
-        let _ = unsafe { cb(commu_index) };
+        let _ = unsafe { app_call!(cb, instance; commu_index) };
     }
 }
 
 #[cfg(test)]
 mod tests {
+    use super::super::types::{WORD, tCopKernel};
     use super::*;
 
     unsafe extern "C" fn cb(_w: WORD) -> tCopKernel {

@@ -11,8 +11,9 @@
 use core::ffi::c_void;
 
 use super::callbacks::Callbacks;
-use super::driver::{self, CdrvPort, TgtClock};
+use super::driver::{self, TgtClock};
 use super::global::{self, Instance, code};
+use super::instance;
 use super::ptr::{self, c_try};
 use super::types::*;
 use crate::ccm::{NmtCommand, Stack};
@@ -52,14 +53,19 @@ pub extern "C" fn CopGetStackVersion() -> DWORD {
 /// `pInitParam_p` must be NULL or point to a valid `tCcmInitParam`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmInitCANopen(
+    #[cfg(multi_instance)] pInstanceHandle: *mut tCopInstanceHdl,
     pInitParam_p: *mut tCcmInitParam,
     FirstCall_p: tCcmInitCall,
 ) -> tCopKernel {
-    let _ = FirstCall_p; // ignored in a single-instance build (cop.h)
+    let Some(first) = instance::first_driver_instance(FirstCall_p) else {
+        return CopKernel::InvalidParam.code();
+    };
     // SAFETY: the caller's contract (NULL or a valid tCcmInitParam).
     let p = c_try!(unsafe { ptr::read(pInitParam_p) });
-    match init(&p) {
+    instance::ccm_enter_new!(pInstanceHandle => out);
+    match init(&p, first) {
         Ok(()) => {
+            out.publish();
             global::pump(|i, now| i.stack.drain(&mut i.port, now));
             CopKernel::Successful.code()
         }
@@ -67,7 +73,7 @@ pub unsafe extern "C" fn CcmInitCANopen(
     }
 }
 
-fn init(p: &tCcmInitParam) -> CopResult {
+fn init(p: &tCcmInitParam, first: bool) -> CopResult {
     let Some(init_ram) = p.m_fpObdInitRam else {
         return Err(CopKernel::InvalidParam);
     };
@@ -95,6 +101,7 @@ fn init(p: &tCcmInitParam) -> CopResult {
     };
     let mut od = ObjectDictionary::new(generic, man, dev).map_err(|e| e.code)?;
     od.set_user_part(usr).map_err(|e| e.code)?;
+    od.set_callback_handle(instance::callback_handle());
     // SAFETY: objdef.h points to a static tSrdoAppCallbacks or leaves
     // the pointer NULL (no SRDO objects).
     let srdo_callbacks = unsafe { ptr::read(ram.m_pSrdoCallbacks) }.ok();
@@ -115,10 +122,10 @@ fn init(p: &tCcmInitParam) -> CopResult {
     let stack = Stack::with_lss(od, p.m_bInitNodeId)?;
     #[cfg(not(ccm_module_lsss))]
     let stack = Stack::new(od, p.m_bInitNodeId)?;
-    driver::init(&mut cdrv)?;
+    let port = driver::init(&mut cdrv, first)?;
     global::install(Instance {
         stack,
-        port: CdrvPort,
+        port,
         callbacks: Callbacks {
             nmt: p.m_fpNmtEventCallback,
             srdo: srdo_callbacks,
@@ -131,9 +138,12 @@ fn init(p: &tCcmInitParam) -> CopResult {
 /// `CcmShutDownCANopen`: stops the stack and deletes the driver instance
 /// (`CdrvDeleteInstance`). kCopIllegalInstance when not initialised.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmShutDownCANopen() -> tCopKernel {
+pub extern "C" fn CcmShutDownCANopen(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     match global::remove() {
-        Ok(_) => to_code(driver::delete_instance()),
+        Ok(i) => to_code(driver::delete_instance(&i.port)),
         Err(e) => e.code(),
     }
 }
@@ -142,7 +152,10 @@ pub extern "C" fn CcmShutDownCANopen() -> tCopKernel {
 /// kNmtEvEnterPreOperational). kCopNmtStateError when already connected,
 /// kCopLsssInvalidNodeId while the node has no node-ID (LSS).
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmConnectToNet() -> tCopKernel {
+pub extern "C" fn CcmConnectToNet(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     let r = global::with(|i| i.stack.connect());
     if matches!(r, Ok(Ok(()))) {
         global::pump(|i, now| i.stack.drain(&mut i.port, now));
@@ -157,7 +170,8 @@ pub extern "C" fn CcmConnectToNet() -> tCopKernel {
 /// not acknowledged by `AppSrdoError` (manual 2.11.6; the application has
 /// also been told through `AppSrdoError` itself).
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmProcess() -> tCopKernel {
+pub extern "C" fn CcmProcess(#[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     let r = global::with(|i| {
         i.tables.sync(&mut i.stack, &mut i.port);
         i.stack.begin_cycle()
@@ -180,8 +194,11 @@ pub extern "C" fn CcmProcess() -> tCopKernel {
 /// this call), and for a node that has one from the start;
 /// kCopIllegalInstance before `CcmInitCANopen`.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmProcessLssInitState() -> tCopKernel {
-    let r = CcmProcess();
+pub extern "C" fn CcmProcessLssInitState(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
+    let r = instance::here!(CcmProcess,);
     if r != CopKernel::Successful.code() {
         return r;
     }
@@ -201,11 +218,13 @@ pub extern "C" fn CcmProcessLssInitState() -> tCopKernel {
 /// `pDstData_p` must be valid for `*pSize_p` bytes of writes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmReadObject(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     wIndex_p: WORD,
     bSubindex_p: BYTE,
     pDstData_p: *mut c_void,
     pSize_p: *mut tObdSize,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (a size variable, NULL refused).
     let size = c_try!(unsafe { ptr::out(pSize_p) });
     // SAFETY: the caller's contract (`*pSize_p` writable bytes; NULL
@@ -241,11 +260,13 @@ pub unsafe extern "C" fn CcmReadObject(
 /// `pSrcData_p` must be valid for `Size_p` bytes of reads.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmWriteObject(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     wIndex_p: WORD,
     bSubindex_p: BYTE,
     pSrcData_p: *const c_void,
     Size_p: tObdSize,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (`Size_p` readable bytes).
     let data =
         c_try!(unsafe { ptr::slice_or_empty(pSrcData_p as *const u8, obd_size_len(Size_p)) });
@@ -264,14 +285,18 @@ pub unsafe extern "C" fn CcmWriteObject(
 /// `CcmObdGetNodeState`: the NMT state (`kNodeState*`), 0 before
 /// initialisation.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmObdGetNodeState() -> BYTE {
+pub extern "C" fn CcmObdGetNodeState(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+) -> BYTE {
+    instance::ccm_enter!(InstanceHandle);
     global::with(|i| i.stack.nmt_state() as u8).unwrap_or(0)
 }
 
 /// `CcmLsssGetNodeId`: this node's ID (0xFF while a node started for LSS
 /// has none, see `CcmProcessLssInitState`), 0 before initialisation.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmLsssGetNodeId() -> BYTE {
+pub extern "C" fn CcmLsssGetNodeId(#[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl) -> BYTE {
+    instance::ccm_enter!(InstanceHandle);
     global::with(|i| i.stack.node_id()).unwrap_or(0)
 }
 
@@ -279,7 +304,11 @@ pub extern "C" fn CcmLsssGetNodeId() -> BYTE {
 /// kCopNmtUnknownCommand for an unknown value, kCopNmtStateError before
 /// `CcmConnectToNet`.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmNmtsExecCommand(NmtCommand_p: tNmtCommand) -> tCopKernel {
+pub extern "C" fn CcmNmtsExecCommand(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    NmtCommand_p: tNmtCommand,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     let Some(cmd) = NmtCommand::from_u16(NmtCommand_p) else {
         return CopKernel::NmtUnknownCommand.code();
     };
@@ -290,7 +319,11 @@ pub extern "C" fn CcmNmtsExecCommand(NmtCommand_p: tNmtCommand) -> tCopKernel {
 
 /// `CcmRegisterErrorCallback`.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmRegisterErrorCallback(fpErrorCallback_p: tCcmErrorCallback) {
+pub extern "C" fn CcmRegisterErrorCallback(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    fpErrorCallback_p: tCcmErrorCallback,
+) {
+    instance::ccm_enter!(InstanceHandle);
     let _ = global::with(|i| i.callbacks.error = fpErrorCallback_p);
 }
 
@@ -299,7 +332,11 @@ pub extern "C" fn CcmRegisterErrorCallback(fpErrorCallback_p: tCcmErrorCallback)
 /// configured (`CcmInitLgs` and a non-zero life time); otherwise the codes
 /// of the object write.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmConfigHbp(wHbProducerTime_p: WORD) -> tCopKernel {
+pub extern "C" fn CcmConfigHbp(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    wHbProducerTime_p: WORD,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     let now = TgtClock.now();
     code(global::with(|i| i.stack.config_hbp(wHbProducerTime_p, now)))
 }
@@ -311,7 +348,11 @@ pub extern "C" fn CcmConfigHbp(wHbProducerTime_p: WORD) -> tCopKernel {
 /// identifier CiA 301 reserves, 29 bits without CAN 2.0B); otherwise the
 /// codes of the object write.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmConfigEmcp(dwEmcpProducerCobId_p: DWORD) -> tCopKernel {
+pub extern "C" fn CcmConfigEmcp(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    dwEmcpProducerCobId_p: DWORD,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     let now = TgtClock.now();
     code(global::with(|i| {
         i.stack.config_emcp(dwEmcpProducerCobId_p, now)
@@ -326,7 +367,11 @@ pub extern "C" fn CcmConfigEmcp(dwEmcpProducerCobId_p: DWORD) -> tCopKernel {
 /// # Safety
 /// `pEmcpParam_p` must be NULL or point to a valid `tEmcParam`.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn CcmSendEmergency(pEmcpParam_p: *const tEmcParam) -> tCopKernel {
+pub unsafe extern "C" fn CcmSendEmergency(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    pEmcpParam_p: *const tEmcParam,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (NULL or a valid tEmcParam).
     let p = c_try!(unsafe { ptr::read(pEmcpParam_p) });
     let e = Emergency {
@@ -352,9 +397,11 @@ pub unsafe extern "C" fn CcmSendEmergency(pEmcpParam_p: *const tEmcParam) -> tCo
 /// variables outlive the stack.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmDefineVarTab(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     pVarTab_p: *const tVarParam,
     wNumOfVars_p: WORD,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (wNumOfVars_p entries; NULL refused).
     let tab = c_try!(unsafe { ptr::slice(pVarTab_p, usize::from(wNumOfVars_p)) });
     code(global::with(|i| {

@@ -7,7 +7,10 @@
 //! objects (NMT, SDO, EMCY, heartbeat, SRDO) have no handle.
 
 use super::global;
+use super::instance;
 use super::ptr::{self, c_try};
+#[cfg(multi_instance)]
+use super::types::tCopInstanceHdl;
 use super::types::{COB_HDL_TX_TABLE, msg_type, tCanId, tCobParam, tCopKernel};
 use crate::error::CopKernel;
 use crate::pdo::Direction;
@@ -24,7 +27,11 @@ use crate::pdo::Direction;
 /// `pCobParam_p` must be NULL or valid for reading and writing a
 /// `tCobParam`.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn CcmCobGetParam(pCobParam_p: *mut tCobParam) -> tCopKernel {
+pub unsafe extern "C" fn CcmCobGetParam(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    pCobParam_p: *mut tCobParam,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (NULL or a valid tCobParam).
     let out = c_try!(unsafe { ptr::out(pCobParam_p) });
     let mut p = out.get();

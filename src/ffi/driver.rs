@@ -5,17 +5,67 @@ use super::types::{cdrv_status, msg_type, tCanId, tCdrvInitParam, tCdrvMsg, tCop
 use crate::error::{CopKernel, CopResult};
 use crate::port::{CanFrame, CanId, CanPort, Clock, PortStatus, Priority, RxFrame, Ticks};
 
+// The application's driver. In a multi-instance build every function takes
+// the driver's instance pointer first (`MCO_DECL_INSTANCE_PTR_`,
+// `MCO_DECL_PTR_INSTANCE_PTR_` for CdrvInit / CdrvAddInstance); the calls
+// go through `cdrv!`, which passes the port's pointer where there is one.
 unsafe extern "C" {
-    fn CdrvInit(pInitParam_p: *mut tCdrvInitParam) -> tCopKernel;
-    fn CdrvDeleteInstance() -> tCopKernel;
-    fn CdrvWriteMsg(pCanMsg_p: *mut tCdrvMsg) -> tCopKernel;
-    fn CdrvReadMsg(ppCanMsg_p: *mut *mut tCdrvMsg) -> tCopKernel;
-    fn CdrvReleaseMsg(pCanMsg_p: *mut tCdrvMsg) -> tCopKernel;
-    fn CdrvDefineCanId(pCanMsg_p: *mut tCdrvMsg) -> tCopKernel;
-    fn CdrvUndefineCanId(pCanMsg_p: *mut tCdrvMsg) -> tCopKernel;
-    fn CdrvGetStatus(pStatus_p: *mut u16) -> tCopKernel;
-    fn CdrvResetStatus(Status_p: u16) -> tCopKernel;
+    fn CdrvInit(
+        #[cfg(multi_instance)] ppInstance_p: *mut *mut core::ffi::c_void,
+        pInitParam_p: *mut tCdrvInitParam,
+    ) -> tCopKernel;
+    #[cfg(multi_instance)]
+    fn CdrvAddInstance(
+        ppInstance_p: *mut *mut core::ffi::c_void,
+        pInitParam_p: *mut tCdrvInitParam,
+    ) -> tCopKernel;
+    fn CdrvDeleteInstance(#[cfg(multi_instance)] pInstance_p: *mut core::ffi::c_void)
+    -> tCopKernel;
+    fn CdrvWriteMsg(
+        #[cfg(multi_instance)] pInstance_p: *mut core::ffi::c_void,
+        pCanMsg_p: *mut tCdrvMsg,
+    ) -> tCopKernel;
+    fn CdrvReadMsg(
+        #[cfg(multi_instance)] pInstance_p: *mut core::ffi::c_void,
+        ppCanMsg_p: *mut *mut tCdrvMsg,
+    ) -> tCopKernel;
+    fn CdrvReleaseMsg(
+        #[cfg(multi_instance)] pInstance_p: *mut core::ffi::c_void,
+        pCanMsg_p: *mut tCdrvMsg,
+    ) -> tCopKernel;
+    fn CdrvDefineCanId(
+        #[cfg(multi_instance)] pInstance_p: *mut core::ffi::c_void,
+        pCanMsg_p: *mut tCdrvMsg,
+    ) -> tCopKernel;
+    fn CdrvUndefineCanId(
+        #[cfg(multi_instance)] pInstance_p: *mut core::ffi::c_void,
+        pCanMsg_p: *mut tCdrvMsg,
+    ) -> tCopKernel;
+    fn CdrvGetStatus(
+        #[cfg(multi_instance)] pInstance_p: *mut core::ffi::c_void,
+        pStatus_p: *mut u16,
+    ) -> tCopKernel;
+    fn CdrvResetStatus(
+        #[cfg(multi_instance)] pInstance_p: *mut core::ffi::c_void,
+        Status_p: u16,
+    ) -> tCopKernel;
     fn TgtGetTickCount() -> tTime;
+}
+
+/// Calls a driver function with the port's instance pointer first in a
+/// multi-instance build: `cdrv!(port, CdrvWriteMsg(&mut m))`.
+#[cfg(multi_instance)]
+macro_rules! cdrv {
+    ($port:expr, $f:ident($($a:expr),*)) => {
+        $f($port.instance $(, $a)*)
+    };
+}
+#[cfg(not(multi_instance))]
+macro_rules! cdrv {
+    ($port:expr, $f:ident($($a:expr),*)) => {{
+        let _ = &$port;
+        $f($($a),*)
+    }};
 }
 
 fn result(code: tCopKernel) -> CopResult {
@@ -47,17 +97,37 @@ pub fn kernel(code: tCopKernel) -> CopKernel {
     }
 }
 
-/// `CdrvInit`.
-pub fn init(param: &mut tCdrvInitParam) -> CopResult {
-    // SAFETY: calling the application's driver with a valid, initialised
-    // parameter block that lives for the duration of the call.
-    result(unsafe { CdrvInit(param) })
+/// `CdrvInit` (`first`) or, in a multi-instance build, `CdrvAddInstance`:
+/// the port onto the controller the parameters name.
+pub fn init(param: &mut tCdrvInitParam, first: bool) -> Result<CdrvPort, CopKernel> {
+    #[cfg(multi_instance)]
+    {
+        let mut instance: *mut core::ffi::c_void = core::ptr::null_mut();
+        // SAFETY: calling the application's driver with a valid, initialised
+        // parameter block and a place for its instance pointer, both living
+        // for the duration of the call.
+        let code = unsafe {
+            if first {
+                CdrvInit(&mut instance, param)
+            } else {
+                CdrvAddInstance(&mut instance, param)
+            }
+        };
+        result(code).map(|()| CdrvPort { instance })
+    }
+    #[cfg(not(multi_instance))]
+    {
+        let _ = first;
+        // SAFETY: calling the application's driver with a valid, initialised
+        // parameter block that lives for the duration of the call.
+        result(unsafe { CdrvInit(param) }).map(|()| CdrvPort::default())
+    }
 }
 
-/// `CdrvDeleteInstance`.
-pub fn delete_instance() -> CopResult {
+/// `CdrvDeleteInstance` of the port's controller.
+pub fn delete_instance(port: &CdrvPort) -> CopResult {
     // SAFETY: plain call into the application's driver.
-    result(unsafe { CdrvDeleteInstance() })
+    result(unsafe { cdrv!(port, CdrvDeleteInstance()) })
 }
 
 fn to_msg(frame: &CanFrame, kind: u8) -> tCdrvMsg {
@@ -77,9 +147,43 @@ fn to_msg(frame: &CanFrame, kind: u8) -> tCdrvMsg {
     m
 }
 
-/// The stack's port onto the application's driver.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct CdrvPort;
+/// Which losses the overrun bits of `CdrvGetStatus` report: (a frame that
+/// can have been an SRDO or GFC frame, only other frames). SRDO and GFC
+/// identifiers are defined with `kCdrvMsgHigh`, so with
+/// `CDRV_USE_HIGHBUFF` an overrun of the low buffer loses other frames
+/// only; the controller's own overrun (`kCdrvOverrun`) and, without a high
+/// buffer, the low buffer's overrun may have lost one of them.
+fn split_overrun(lost: u16) -> (bool, bool) {
+    let safety_bits = if crate::config::CDRV_USE_HIGHBUFF {
+        cdrv_status::OVERRUN | cdrv_status::RX_BUFF_HIGH_OVERRUN
+    } else {
+        cdrv_status::OVERRUN | cdrv_status::RX_BUFF_HIGH_OVERRUN | cdrv_status::RX_BUFF_LOW_OVERRUN
+    };
+    let safety = lost & safety_bits != 0;
+    (
+        safety,
+        !safety && lost & cdrv_status::RX_BUFF_LOW_OVERRUN != 0,
+    )
+}
+
+/// The stack's port onto the application's driver: in a multi-instance
+/// build, the instance pointer of its controller.
+#[derive(Clone, Copy, Debug)]
+pub struct CdrvPort {
+    /// What `CdrvInit` / `CdrvAddInstance` returned for the controller.
+    #[cfg(multi_instance)]
+    instance: *mut core::ffi::c_void,
+}
+
+impl Default for CdrvPort {
+    /// A port of no controller (single-instance builds: the one driver).
+    fn default() -> CdrvPort {
+        CdrvPort {
+            #[cfg(multi_instance)]
+            instance: core::ptr::null_mut(),
+        }
+    }
+}
 
 impl CanPort for CdrvPort {
     fn send(&mut self, frame: &CanFrame, prio: Priority) -> CopResult {
@@ -91,7 +195,7 @@ impl CanPort for CdrvPort {
             },
         );
         // SAFETY: `m` is a valid tCdrvMsg on our stack; the driver copies it.
-        result(unsafe { CdrvWriteMsg(&mut m) })
+        result(unsafe { cdrv!(self, CdrvWriteMsg(&mut m)) })
     }
 
     // Inlined into the stack's one receive loop.
@@ -100,7 +204,7 @@ impl CanPort for CdrvPort {
         let mut p: *mut tCdrvMsg = core::ptr::null_mut();
         // SAFETY: the driver stores a pointer to one of its buffer entries
         // into `p` (or leaves it untouched and returns kCopCdrvNoMsg).
-        let code = unsafe { CdrvReadMsg(&mut p) };
+        let code = unsafe { cdrv!(self, CdrvReadMsg(&mut p)) };
         if (code != CopKernel::CdrvMsgHigh.code()
             && code != CopKernel::CdrvMsgLow.code()
             && code != 0)
@@ -112,7 +216,7 @@ impl CanPort for CdrvPort {
         // valid until CdrvReleaseMsg; we copy it before releasing.
         let m = unsafe { *p };
         // SAFETY: releases the entry obtained above, exactly once.
-        unsafe { CdrvReleaseMsg(p) };
+        unsafe { cdrv!(self, CdrvReleaseMsg(p)) };
         let id = if m.m_MsgType & msg_type::EXTEND != 0 {
             CanId::ext(u32::from(m.m_CanId)).unwrap_or(CanId::std_masked(0x7FF))
         } else {
@@ -147,7 +251,7 @@ impl CanPort for CdrvPort {
     fn status(&mut self) -> PortStatus {
         let mut status: u16 = 0;
         // SAFETY: `status` is a valid WORD for the driver to fill.
-        if unsafe { CdrvGetStatus(&mut status) } != 0 {
+        if unsafe { cdrv!(self, CdrvGetStatus(&mut status)) } != 0 {
             return PortStatus::default();
         }
         let lost = status
@@ -156,10 +260,12 @@ impl CanPort for CdrvPort {
                 | cdrv_status::RX_BUFF_LOW_OVERRUN);
         if lost != 0 {
             // SAFETY: plain call; clears the bits we consumed.
-            unsafe { CdrvResetStatus(lost) };
+            unsafe { cdrv!(self, CdrvResetStatus(lost)) };
         }
+        let (safety, other) = split_overrun(lost);
         PortStatus {
-            rx_overrun: lost != 0,
+            rx_overrun: safety,
+            rx_overrun_other: other,
             bus_off: status & cdrv_status::BUS_OFF != 0,
         }
     }
@@ -175,14 +281,14 @@ impl CanPort for CdrvPort {
                 },
         );
         // SAFETY: valid message descriptor for the duration of the call.
-        result(unsafe { CdrvDefineCanId(&mut m) })
+        result(unsafe { cdrv!(self, CdrvDefineCanId(&mut m)) })
     }
 
     fn unsubscribe(&mut self, id: CanId) -> CopResult {
         let frame = CanFrame::new(id, &[]);
         let mut m = to_msg(&frame, msg_type::RECV);
         // SAFETY: valid message descriptor for the duration of the call.
-        result(unsafe { CdrvUndefineCanId(&mut m) })
+        result(unsafe { cdrv!(self, CdrvUndefineCanId(&mut m)) })
     }
 }
 
@@ -194,5 +300,33 @@ impl Clock for TgtClock {
     fn now(&self) -> Ticks {
         // SAFETY: plain call into the application's target code.
         Ticks(unsafe { TgtGetTickCount() })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Only a loss that can have hit an SRDO or GFC frame is one for the
+    /// SRDO module (SAFETY_BEHAVIOUR.md section 5); a low-buffer overrun
+    /// with a high buffer is a CAN overrun of the other communication.
+    #[test]
+    fn low_buffer_overrun_is_no_safety_loss_with_a_high_buffer() {
+        use cdrv_status::*;
+        assert_eq!(split_overrun(0), (false, false));
+        assert_eq!(split_overrun(OVERRUN), (true, false));
+        assert_eq!(split_overrun(RX_BUFF_HIGH_OVERRUN), (true, false));
+        assert_eq!(
+            split_overrun(RX_BUFF_LOW_OVERRUN),
+            (
+                !crate::config::CDRV_USE_HIGHBUFF,
+                crate::config::CDRV_USE_HIGHBUFF
+            )
+        );
+        assert_eq!(
+            split_overrun(RX_BUFF_LOW_OVERRUN | RX_BUFF_HIGH_OVERRUN),
+            (true, false)
+        );
+        assert_eq!(split_overrun(BUS_OFF), (false, false));
     }
 }

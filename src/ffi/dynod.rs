@@ -55,6 +55,9 @@
 use core::ffi::c_void;
 
 use super::global;
+use super::instance;
+#[cfg(multi_instance)]
+use super::types::tCopInstanceHdl;
 use super::types::{BYTE, DWORD, WORD, tCopKernel};
 use crate::error::CopKernel;
 use crate::od::dcf::HEADER_SIZE;
@@ -155,9 +158,11 @@ fn pool() -> Option<&'static DynPool<POOL_SIZE>> {
 /// by the stack) until `DynDestroyOd`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn DynBuildOd(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     pbDcfSegCont_p: *mut BYTE,
     pProcessImageDscrpt_p: *mut tProcessImageDscrpt,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     let refuse = |code: CopKernel| {
         if let Some(p) = pool() {
             p.set_last(code, None);
@@ -235,11 +240,13 @@ pub unsafe extern "C" fn DynBuildOd(
 /// Each non-NULL pointer must be valid for writing its type.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn DynGetLastError(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     pwIndex_p: *mut WORD,
     pbSubIndex_p: *mut BYTE,
     pdwOffset_p: *mut DWORD,
     pCode_p: *mut tCopKernel,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     let Some(pool) = pool() else {
         return CopKernel::IllegalInstance.code();
     };
@@ -280,7 +287,10 @@ pub unsafe extern "C" fn DynGetLastError(
 /// Returns kCopSuccessful; kCopIllegalInstance when there is neither an
 /// initialised stack nor a dynamic OD to give back.
 #[unsafe(no_mangle)]
-pub extern "C" fn DynDestroyOd() -> tCopKernel {
+pub extern "C" fn DynDestroyOd(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     let Some(pool) = pool() else {
         return CopKernel::IllegalInstance.code();
     };

@@ -20,6 +20,7 @@ use core::mem::MaybeUninit;
 
 use super::callbacks::{self, Callbacks};
 use super::driver::{CdrvPort, TgtClock};
+use super::instance::app_call;
 use super::types::tCopKernel;
 use crate::ccm::Stack;
 use crate::error::{CopKernel, CopResult, to_code};
@@ -147,6 +148,58 @@ pub fn select(index: usize) -> bool {
     forget_srdo_state();
     GLOBAL.current.set(index);
     true
+}
+
+/// The instance an exported function of a multi-instance build addresses
+/// ([`crate::ffi::instance::ccm_enter!`]): entered with the function's
+/// handle, left when the function returns, so that a call from inside a
+/// callback of another instance leaves that instance addressed again when
+/// it returns.
+#[cfg(multi_instance)]
+pub struct Scope {
+    previous: usize,
+}
+
+#[cfg(multi_instance)]
+impl Scope {
+    /// Addresses instance `handle`; `Err(kCopIllegalInstance)` for a handle
+    /// of no slot. Whether the slot holds an instance is decided by
+    /// [`with`] (kCopIllegalInstance before `CcmInitCANopen` and after
+    /// `CcmShutDownCANopen`).
+    #[inline(always)]
+    pub fn enter(handle: u8) -> Result<Scope, CopKernel> {
+        let h = usize::from(handle);
+        if h >= MAX_INSTANCES {
+            return Err(CopKernel::IllegalInstance);
+        }
+        let previous = GLOBAL.current.replace(h);
+        if previous != h {
+            forget_srdo_state();
+        }
+        Ok(Scope { previous })
+    }
+}
+
+#[cfg(multi_instance)]
+impl Drop for Scope {
+    #[inline(always)]
+    fn drop(&mut self) {
+        if GLOBAL.current.replace(self.previous) != self.previous {
+            forget_srdo_state();
+        }
+    }
+}
+
+/// The handle of a free slot for `CcmInitCANopen` (the lowest), or
+/// kCopNoFreeInstance. The slot is taken by [`install`] with the handle
+/// addressed.
+#[cfg(multi_instance)]
+pub fn free_slot() -> Result<u8, CopKernel> {
+    let live = GLOBAL.live.get();
+    (0..MAX_INSTANCES)
+        .find(|i| live & (1 << i) == 0)
+        .map(|i| i as u8)
+        .ok_or(CopKernel::NoFreeInstance)
 }
 
 /// Runs `f` with exclusive access to the instance.
@@ -351,7 +404,7 @@ pub fn report_error(code: CopKernel) {
     let cb = with(|i| i.callbacks.error).ok().flatten();
     if let Some(cb) = cb {
         // SAFETY: the application's error callback; no argument object.
-        unsafe { cb(core::ptr::null_mut(), code.code()) };
+        unsafe { app_call!(cb, current(); core::ptr::null_mut(), code.code()) };
     }
 }
 
@@ -417,7 +470,7 @@ fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Optio
 /// address, so one process can run several nodes on a simulated bus.
 /// Returns kCopSuccessful, or kCopIllegalInstance for an index out of range
 /// (or when called from inside a callback).
-#[cfg(feature = "sim-instances")]
+#[cfg(all(feature = "sim-instances", not(multi_instance)))]
 #[unsafe(no_mangle)]
 pub extern "C" fn CopSimSelectInstance(bInstance_p: super::types::BYTE) -> tCopKernel {
     if select(usize::from(bInstance_p)) {
@@ -434,7 +487,7 @@ mod tests {
     fn instance(node: u8) -> Instance {
         Instance {
             stack: Stack::new(crate::testod::dictionary(), node).unwrap(),
-            port: CdrvPort,
+            port: CdrvPort::default(),
             callbacks: Callbacks::default(),
             tables: Default::default(),
         }

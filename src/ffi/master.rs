@@ -7,6 +7,7 @@
 
 use super::driver::TgtClock;
 use super::global::{self, Instance, code};
+use super::instance;
 use super::ptr::{self, c_try};
 use super::types::*;
 use crate::error::CopKernel;
@@ -28,7 +29,10 @@ fn with_tables<R>(f: impl FnOnce(&mut Instance) -> R) -> Result<R, CopKernel> {
 /// the listed producers are received and not reported. Returns
 /// kCopSuccessful (kCopIllegalInstance before `CcmInitCANopen`).
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmInitEmcc() -> tCopKernel {
+pub extern "C" fn CcmInitEmcc(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     global::run(|i| {
         i.stack.init_emcc();
         i.callbacks.emcc = None;
@@ -41,7 +45,11 @@ pub extern "C" fn CcmInitEmcc() -> tCopKernel {
 /// order received, in PRE-OPERATIONAL and OPERATIONAL. Returns
 /// kCopSuccessful (kCopIllegalInstance before `CcmInitCANopen`).
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmInitEmccEx(pfnCallback_p: tAppEmccEventCallback) -> tCopKernel {
+pub extern "C" fn CcmInitEmccEx(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    pfnCallback_p: tAppEmccEventCallback,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     global::run(|i| {
         i.stack.init_emcc();
         i.callbacks.emcc = pfnCallback_p;
@@ -62,9 +70,11 @@ pub extern "C" fn CcmInitEmccEx(pfnCallback_p: tAppEmccEventCallback) -> tCopKer
 /// slots").
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmEmccDefineProducerTab(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     pbProducerTab_p: *const BYTE,
     bNumOfProducer_p: BYTE,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (bNumOfProducer_p entries).
     let nodes =
         c_try!(unsafe { ptr::slice_or_empty(pbProducerTab_p, usize::from(bNumOfProducer_p)) });
@@ -84,7 +94,10 @@ pub unsafe extern "C" fn CcmEmccDefineProducerTab(
 
 /// `CcmInitNmtm`: enables the NMT master (boot-up detection, guarding).
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmInitNmtm() -> tCopKernel {
+pub extern "C" fn CcmInitNmtm(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     global::run(|i| {
         i.stack.nmtm_mut().enable();
     })
@@ -93,7 +106,11 @@ pub extern "C" fn CcmInitNmtm() -> tCopKernel {
 /// `CcmInitNmtmEx`: as `CcmInitNmtm`, with a callback for boot-up and
 /// guarding events (`kNmtErrCtrlEvBootupReceived`, `kNmtErrCtrlEvLg*`).
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmInitNmtmEx(pfnCallback_p: tAppNmtmEventCallback) -> tCopKernel {
+pub extern "C" fn CcmInitNmtmEx(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    pfnCallback_p: tAppNmtmEventCallback,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     global::run(|i| {
         i.stack.nmtm_mut().enable();
         i.callbacks.nmtm = pfnCallback_p;
@@ -110,9 +127,11 @@ pub extern "C" fn CcmInitNmtmEx(pfnCallback_p: tAppNmtmEventCallback) -> tCopKer
 /// when the application changes it (README "Tables with free slots").
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmDefineSlaveTab(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     pbSlaveTab_p: *const BYTE,
     bNumOfSlaves_p: BYTE,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (bNumOfSlaves_p entries).
     let nodes = c_try!(unsafe { ptr::slice_or_empty(pbSlaveTab_p, usize::from(bNumOfSlaves_p)) });
     code(global::with(|i| {
@@ -128,7 +147,12 @@ pub unsafe extern "C" fn CcmDefineSlaveTab(
 /// kCopNmtUnknownCommand, kCopNmtmInvalidSlaveNodeId, kCopNmtStateError
 /// before `CcmConnectToNet`, or the driver's code.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmSendNmtCommand(bNodeId_p: BYTE, NmtCommand_p: tNmtCommand) -> tCopKernel {
+pub extern "C" fn CcmSendNmtCommand(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    bNodeId_p: BYTE,
+    NmtCommand_p: tNmtCommand,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     let cs = match NmtCommand_p {
         0x0001 => NmtCs::Start,
         0x0002 => NmtCs::Stop,
@@ -144,13 +168,20 @@ pub extern "C" fn CcmSendNmtCommand(bNodeId_p: BYTE, NmtCommand_p: tNmtCommand) 
 
 /// `CcmBootNetwork`: "start remote node" to all nodes.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmBootNetwork() -> tCopKernel {
-    CcmSendNmtCommand(0, 0x0001)
+pub extern "C" fn CcmBootNetwork(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
+    instance::here!(CcmSendNmtCommand, 0, 0x0001)
 }
 
 /// `CcmTriggerNodeGuard`: sends one guard request to a slave now.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmTriggerNodeGuard(bNodeId_p: BYTE) -> tCopKernel {
+pub extern "C" fn CcmTriggerNodeGuard(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    bNodeId_p: BYTE,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     let now = TgtClock.now();
     code(with_tables(|i| {
         let Instance { stack, port, .. } = i;
@@ -165,9 +196,11 @@ pub extern "C" fn CcmTriggerNodeGuard(bNodeId_p: BYTE) -> tCopKernel {
 /// `pSlaveParam_p` must be NULL or point to a valid `tNmtmSlaveParam`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmConfigLgm(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     bNodeId_p: BYTE,
     pSlaveParam_p: *const tNmtmSlaveParam,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (NULL or a valid tNmtmSlaveParam).
     let p = c_try!(unsafe { ptr::read(pSlaveParam_p) });
     let now = TgtClock.now();
@@ -191,9 +224,11 @@ pub unsafe extern "C" fn CcmConfigLgm(
 /// `pSlaveInfo_p` must be NULL or valid for writing a `tNmtmSlaveInfo`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmNmtmGetSlaveInfo(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     bNodeId_p: BYTE,
     pSlaveInfo_p: *mut tNmtmSlaveInfo,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (NULL or a writable tNmtmSlaveInfo).
     let out = c_try!(unsafe { ptr::out(pSlaveInfo_p) });
     out.give(with_tables(|i| {
@@ -209,14 +244,19 @@ pub unsafe extern "C" fn CcmNmtmGetSlaveInfo(
 /// `CcmInitHbc`: the heartbeat consumer runs from object 0x1016 (always
 /// active in this library); kept for source compatibility.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmInitHbc() -> tCopKernel {
+pub extern "C" fn CcmInitHbc(#[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     code(global::with(|_| Ok(())))
 }
 
 /// `CcmInitHbcEx`: registers the heartbeat consumer callback
 /// (`kNmtErrCtrlEvHbcConnected`, `...ConnectionLost`, `...NodeStateChanged`).
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmInitHbcEx(fpHbcEventCallback_p: tAppHbcEventCallback) -> tCopKernel {
+pub extern "C" fn CcmInitHbcEx(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    fpHbcEventCallback_p: tAppHbcEventCallback,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     global::run(|i| {
         i.callbacks.hbc = fpHbcEventCallback_p;
     })
@@ -231,9 +271,11 @@ pub extern "C" fn CcmInitHbcEx(fpHbcEventCallback_p: tAppHbcEventCallback) -> tC
 /// `pbProducerTab_p` must be valid for `bNumOfProducer_p` entries.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmHbcDefineProducerTab(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     pbProducerTab_p: *const tHbcProdParam,
     bNumOfProducer_p: BYTE,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (bNumOfProducer_p entries).
     let tab =
         c_try!(unsafe { ptr::slice_or_empty(pbProducerTab_p, usize::from(bNumOfProducer_p)) });
@@ -280,9 +322,11 @@ pub unsafe extern "C" fn CcmHbcDefineProducerTab(
 /// `pNodeState_p` must be NULL or valid for writing one byte.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmHbcGetNodeState(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     bNodeId_p: BYTE,
     pNodeState_p: *mut BYTE,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (NULL or one writable byte).
     let out = c_try!(unsafe { ptr::out(pNodeState_p) });
     out.give(global::with(|i| {
@@ -304,9 +348,11 @@ pub unsafe extern "C" fn CcmHbcGetNodeState(
 /// `pClientTab_p` must be valid for `bNumOfClients_p` entries.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmSdocDefineClientTab(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     pClientTab_p: *const tSdocParam,
     bNumOfClients_p: BYTE,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (bNumOfClients_p entries).
     let tab = c_try!(unsafe { ptr::slice_or_empty(pClientTab_p, usize::from(bNumOfClients_p)) });
     code(global::with(|i| {
@@ -364,8 +410,10 @@ pub unsafe extern "C" fn CcmSdocDefineClientTab(
 /// `m_DataLen` bytes until the transfer has ended.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmSdocStartTransfer(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     pSdoTransParam_p: *const tSdocTransferParam,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (NULL or a valid tSdocTransferParam).
     let p = c_try!(unsafe { ptr::read(pSdoTransParam_p) });
     let dir = match p.m_SdocType {
@@ -403,7 +451,12 @@ pub unsafe extern "C" fn CcmSdocStartTransfer(
 /// `CcmSdocAbort`: aborts a running transfer and tells the server.
 /// kCopSdocClientNotExist, kCopSdocTransferError (no transfer running).
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmSdocAbort(wClientIndex_p: WORD, dwAbortCode_p: DWORD) -> tCopKernel {
+pub extern "C" fn CcmSdocAbort(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    wClientIndex_p: WORD,
+    dwAbortCode_p: DWORD,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     let r = global::with(|i| {
         let Instance { stack, port, .. } = i;
         stack.sdo_client_abort(port, wClientIndex_p, dwAbortCode_p)
@@ -420,10 +473,12 @@ pub extern "C" fn CcmSdocAbort(wClientIndex_p: WORD, dwAbortCode_p: DWORD) -> tC
 /// The pointers must be NULL or valid for writing.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmSdocGetState(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     wClientIndex_p: WORD,
     pSdocState_p: *mut tSdocState,
     pdwAbortCode_p: *mut DWORD,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (NULL or writable).
     let state = c_try!(unsafe { ptr::out(pSdocState_p) });
     // SAFETY: as above.
@@ -446,9 +501,11 @@ pub unsafe extern "C" fn CcmSdocGetState(
 /// `pdwBytes_p` must be NULL or valid for writing.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn SdocGetTransmittedBytes(
+    #[cfg(multi_instance)] pInstance: tCopPtrInstance,
     wClientIndex_p: WORD,
     pdwBytes_p: *mut DWORD,
 ) -> tCopKernel {
+    instance::mco_enter!(pInstance);
     // SAFETY: the caller's contract (NULL or writable).
     let out = c_try!(unsafe { ptr::out(pdwBytes_p) });
     out.give(global::with(|i| i.stack.sdoc().transferred(wClientIndex_p)))

@@ -9,6 +9,11 @@
 //! to the callback adapter; neither imports an exported function.
 
 #![allow(non_snake_case, non_camel_case_types, non_upper_case_globals)]
+// In a multi-instance build every module function (`SrdoSend`, ...) reads
+// the handle its instance pointer points to (`instance::mco_enter!`), the
+// C contract of `MCO_DECL_INSTANCE_PTR_`; the functions keep the safe
+// Rust signature they have in a single-instance build.
+#![cfg_attr(multi_instance, allow(clippy::not_unsafe_ptr_arg_deref))]
 
 pub mod ami;
 pub mod callbacks;
@@ -17,6 +22,7 @@ pub mod cob;
 pub mod driver;
 pub mod dynod;
 pub mod global;
+pub mod instance;
 pub mod master;
 
 #[cfg(test)]
@@ -33,14 +39,18 @@ pub mod types;
 
 include!(concat!(env!("OUT_DIR"), "/abi_symbol.rs"));
 
-/// Instances: one on a target. Simulation builds (`sim-instances`, part of
-/// `std`) keep several so that a simulation can run more than one node in
-/// one program; the harness selects the node the next `Ccm*` calls address
-/// with `CopSimSelectInstance`.
-#[cfg(feature = "sim-instances")]
+/// Instances: `COP_MAX_INSTANCES` of `copcfg.h` in a multi-instance build
+/// (each `Ccm*` call names its instance, [`instance`]).
+#[cfg(multi_instance)]
+pub const MAX_INSTANCES: usize = crate::config::COP_MAX_INSTANCES;
+/// Instances of a single-instance build: one on a target. Simulation builds
+/// (`sim-instances`, part of `std`) keep several so that a simulation can
+/// run more than one node in one program; the harness selects the node the
+/// next `Ccm*` calls address with `CopSimSelectInstance`.
+#[cfg(all(not(multi_instance), feature = "sim-instances"))]
 pub const MAX_INSTANCES: usize = 8;
-/// Instances: one on a target.
-#[cfg(not(feature = "sim-instances"))]
+/// Instances of a single-instance build: one on a target.
+#[cfg(all(not(multi_instance), not(feature = "sim-instances")))]
 pub const MAX_INSTANCES: usize = 1;
 
 #[cfg(not(any(test, feature = "std")))]

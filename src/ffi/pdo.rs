@@ -14,7 +14,10 @@ use core::ffi::c_void;
 
 use super::callbacks::{pdo_slot, set_pdo};
 use super::global::{self, code};
+use super::instance;
 use super::ptr::{self, c_try};
+#[cfg(multi_instance)]
+use super::types::tCopInstanceHdl;
 use super::types::{BYTE, DWORD, WORD, assert_offsets, tCopKernel};
 use crate::error::CopKernel;
 use crate::pdo::{Direction, PDO_MAX_MAPPENTRIES, PdoParam, StaticPdoParam};
@@ -217,9 +220,11 @@ pub fn pdo_param(p: &tPdoParam) -> Result<PdoParam<'_>, CopKernel> {
 /// `pPdoTab_p` must be NULL or point to `wNumOfPdos_p` valid entries.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmDefinePdoTab(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     pPdoTab_p: *const tPdoParam,
     wNumOfPdos_p: WORD,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (wNumOfPdos_p entries; NULL refused).
     let tab = c_try!(unsafe { ptr::slice(pPdoTab_p, usize::from(wNumOfPdos_p)) });
     global::run_at(|i, now| {
@@ -252,9 +257,11 @@ pub unsafe extern "C" fn CcmDefinePdoTab(
 /// `m_pVarData` blocks outlive the stack.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmDefineStaticPdoTab(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     pPdoTab_p: *const tPdoStaticParam,
     wNumOfPdos_p: WORD,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (wNumOfPdos_p entries; NULL refused).
     let tab = c_try!(unsafe { ptr::slice(pPdoTab_p, usize::from(wNumOfPdos_p)) });
     for p in tab {
@@ -300,7 +307,11 @@ pub unsafe extern "C" fn CcmDefineStaticPdoTab(
 /// Returns kCopSuccessful or kCopPdoNotExist (not a TPDO of the
 /// dictionary).
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmSignalStaticPdo(wCommuIndex_p: WORD) -> tCopKernel {
+pub extern "C" fn CcmSignalStaticPdo(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    wCommuIndex_p: WORD,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     code(global::with(|i| i.stack.signal_pdo(wCommuIndex_p)))
 }
 
@@ -308,7 +319,10 @@ pub extern "C" fn CcmSignalStaticPdo(wCommuIndex_p: WORD) -> tCopKernel {
 /// event-driven and type 0 TPDO with what it sent last and signals the
 /// changed ones. Returns kCopSuccessful.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmSignalCheckVar() -> tCopKernel {
+pub extern "C" fn CcmSignalCheckVar(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     global::run(|i| {
         i.stack.signal_check_var();
     })
@@ -321,7 +335,11 @@ pub extern "C" fn CcmSignalCheckVar() -> tCopKernel {
 /// Returns kCopSuccessful, kCopInvalidParam (NULL) or kCopPdoVarNotFound
 /// (no valid TPDO maps the variable).
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmSignalVar(pVar_p: *mut c_void) -> tCopKernel {
+pub extern "C" fn CcmSignalVar(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    pVar_p: *mut c_void,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     let addr = c_try!(ptr::address(pVar_p));
     code(global::with(|i| i.stack.signal_var_at(addr)))
 }
@@ -335,7 +353,11 @@ pub extern "C" fn CcmSignalVar(pVar_p: *mut c_void) -> tCopKernel {
 /// invalid); kCopPdoErrorPdoEncode (a mapped object cannot be read); the
 /// driver's code (e.g. kCopCdrvTxBuffLowOverrun).
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmSendPdo(wCommuIndex_p: WORD) -> tCopKernel {
+pub extern "C" fn CcmSendPdo(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    wCommuIndex_p: WORD,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     global::run_at(|i, now| i.stack.send_pdo(&mut i.port, wCommuIndex_p, now))
 }
 
@@ -343,7 +365,10 @@ pub extern "C" fn CcmSendPdo(wCommuIndex_p: WORD) -> tCopKernel {
 /// active from the start (COB-ID of 0x1005, 0x80 without that object).
 /// Returns kCopSuccessful.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmInitSyncConsumer() -> tCopKernel {
+pub extern "C" fn CcmInitSyncConsumer(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     code(global::with(|i| i.stack.init_sync_consumer()))
 }
 
@@ -356,9 +381,11 @@ pub extern "C" fn CcmInitSyncConsumer() -> tCopKernel {
 /// or malformed identifier).
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmConfigSyncConsumer(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     dwSyncId_p: DWORD,
     dwSyncWindowLength_p: DWORD,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     global::run_at(|i, now| {
         i.stack
             .config_sync_consumer(dwSyncId_p, dwSyncWindowLength_p, now)
@@ -370,7 +397,10 @@ pub extern "C" fn CcmConfigSyncConsumer(
 /// variables for TPDOs (received RPDOs are kept, the latest per PDO). Calls
 /// nest. Ignored before `CcmInitCANopen` and inside OBD callbacks.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmEnterCriticalSectionPdoProcess() {
+pub extern "C" fn CcmEnterCriticalSectionPdoProcess(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+) {
+    instance::ccm_enter!(InstanceHandle);
     let _ = global::with(|i| i.stack.enter_critical_pdo());
 }
 
@@ -378,7 +408,10 @@ pub extern "C" fn CcmEnterCriticalSectionPdoProcess() {
 /// `CcmEnterCriticalSectionPdoProcess`; kept RPDO data reach their
 /// variables in the next `CcmProcess`.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmLeaveCriticalSectionPdoProcess() {
+pub extern "C" fn CcmLeaveCriticalSectionPdoProcess(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+) {
+    instance::ccm_enter!(InstanceHandle);
     let _ = global::with(|i| i.stack.leave_critical_pdo());
 }
 

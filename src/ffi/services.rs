@@ -10,6 +10,7 @@
 
 use super::MAX_INSTANCES;
 use super::global::{self, Instance, code};
+use super::instance;
 use super::ptr::{self, c_try};
 use super::types::*;
 use crate::error::{CopKernel, CopResult};
@@ -23,7 +24,10 @@ use crate::wire::time::TimeOfDay;
 /// kCopObdIndexNotExist when the dictionary has no 0x1003 (nothing
 /// changes).
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmClearPreDefinedErrorField() -> tCopKernel {
+pub extern "C" fn CcmClearPreDefinedErrorField(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     code(global::with(|i| i.stack.clear_error_field()))
 }
 
@@ -36,7 +40,8 @@ pub extern "C" fn CcmClearPreDefinedErrorField() -> tCopKernel {
 /// NMT callback at kNmtEvEnterInitialising.
 #[cfg(nmts_use_lifeguarding)]
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmInitLgs() -> tCopKernel {
+pub extern "C" fn CcmInitLgs(#[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     global::run(|i| {
         i.stack.init_lgs();
     })
@@ -51,7 +56,12 @@ pub extern "C" fn CcmInitLgs() -> tCopKernel {
 /// the code of a refused object write.
 #[cfg(nmts_use_lifeguarding)]
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmConfigLgs(wLifeGuardTime_p: WORD, bLifeGuardFactor_p: BYTE) -> tCopKernel {
+pub extern "C" fn CcmConfigLgs(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    wLifeGuardTime_p: WORD,
+    bLifeGuardFactor_p: BYTE,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     global::run_at(|i, now| {
         i.stack
             .config_lgs(wLifeGuardTime_p, bLifeGuardFactor_p, now)
@@ -69,7 +79,12 @@ pub extern "C" fn CcmConfigLgs(wLifeGuardTime_p: WORD, bLifeGuardFactor_p: BYTE)
 /// kCopSuccessful; kCopInvalidParam for a restricted or malformed
 /// identifier (nothing changes); or the code of a refused object write.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmConfigSyncProducer(dwSyncId_p: DWORD, dwSyncCycleTime_p: DWORD) -> tCopKernel {
+pub extern "C" fn CcmConfigSyncProducer(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    dwSyncId_p: DWORD,
+    dwSyncCycleTime_p: DWORD,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     global::run_at(|i, now| {
         i.stack
             .config_sync_producer(dwSyncId_p, dwSyncCycleTime_p, now)
@@ -88,9 +103,11 @@ pub extern "C" fn CcmConfigSyncProducer(dwSyncId_p: DWORD, dwSyncCycleTime_p: DW
 /// `pTimeOfDay_p` must be NULL or point to a valid `tTimeOfDay`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmTspSend(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     dwTimeStampId: DWORD,
     pTimeOfDay_p: *const tTimeOfDay,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (NULL or a valid tTimeOfDay).
     let p = c_try!(unsafe { ptr::read(pTimeOfDay_p) });
     let Some(t) = TimeOfDay::new(p.m_dwMs, p.m_wDays) else {
@@ -190,7 +207,11 @@ unsafe impl Sync for StoreCell {}
 /// `pDriver_p` is NULL or points to a `tCopStoreDriver` that lives as long
 /// as the instance.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn CcmSetStoreDriver(pDriver_p: *const tCopStoreDriver) -> tCopKernel {
+pub unsafe extern "C" fn CcmSetStoreDriver(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    pDriver_p: *const tCopStoreDriver,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract: NULL or a structure that outlives the
     // instance, never changed (so a shared `'static` reference is sound).
     let drv: Option<&'static tCopStoreDriver> = unsafe { pDriver_p.as_ref() };
@@ -250,7 +271,10 @@ fn register(i: &mut Instance) {
 /// configuration key (ignored: nothing of it is applied, the next "save"
 /// replaces it); kCopIllegalInstance before `CcmInitCANopen`.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmInitStore() -> tCopKernel {
+pub extern "C" fn CcmInitStore(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     code(global::with(|i| {
         register(i);
         // SAFETY: see `StoreCell`; only read here.
@@ -270,7 +294,11 @@ pub extern "C" fn CcmInitStore() -> tCopKernel {
 /// before `CcmInitStore`); kCopObdIllegalPart when `bCurrentOdPart_p` is
 /// not a combination of `kObdPart*` bits.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmStoreCheckArchivState(bCurrentOdPart_p: tObdPart) -> tCopKernel {
+pub extern "C" fn CcmStoreCheckArchivState(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    bCurrentOdPart_p: tObdPart,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     code(global::with(|i| i.stack.check_archive(bCurrentOdPart_p)))
 }
 
@@ -280,6 +308,9 @@ pub extern "C" fn CcmStoreCheckArchivState(bCurrentOdPart_p: tObdPart) -> tCopKe
 /// kCopCcmStoreHwError when the driver fails, kCopIllegalInstance before
 /// `CcmInitCANopen`.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmStoreRestoreDefault() -> tCopKernel {
+pub extern "C" fn CcmStoreRestoreDefault(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     code(global::with(|i| i.stack.restore_default()))
 }

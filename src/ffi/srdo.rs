@@ -13,6 +13,7 @@ use core::ffi::c_void;
 
 use super::driver::TgtClock;
 use super::global::{self, Instance, code};
+use super::instance;
 use super::ptr::{self, Out, c_try};
 use super::types::*;
 use crate::error::CopKernel;
@@ -34,7 +35,11 @@ use crate::port::Clock;
 /// With 0, every transmit SRDO is attempted and the first error is
 /// returned.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmSendSrdo(wSrdoCommuIndex_p: WORD) -> tCopKernel {
+pub extern "C" fn CcmSendSrdo(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    wSrdoCommuIndex_p: WORD,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     if wSrdoCommuIndex_p != 0 {
         return send_one(wSrdoCommuIndex_p);
     }
@@ -75,8 +80,12 @@ fn send_one(idx: WORD) -> tCopKernel {
 
 /// `SrdoSend`: the module function behind `CcmSendSrdo`.
 #[unsafe(no_mangle)]
-pub extern "C" fn SrdoSend(wSrdoCommuIndex_p: WORD) -> tCopKernel {
-    CcmSendSrdo(wSrdoCommuIndex_p)
+pub extern "C" fn SrdoSend(
+    #[cfg(multi_instance)] pInstance: tCopPtrInstance,
+    wSrdoCommuIndex_p: WORD,
+) -> tCopKernel {
+    instance::mco_enter!(pInstance);
+    instance::here!(CcmSendSrdo, wSrdoCommuIndex_p)
 }
 
 /// `CcmCheckSrdoConfig`: checks every SRDO (including disabled ones): CRC
@@ -91,7 +100,11 @@ pub extern "C" fn SrdoSend(wSrdoCommuIndex_p: WORD) -> tCopKernel {
 /// # Safety
 /// `pwCommuIndex_p` must be NULL or valid for writing a WORD.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn CcmCheckSrdoConfig(pwCommuIndex_p: *mut WORD) -> tCopKernel {
+pub unsafe extern "C" fn CcmCheckSrdoConfig(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    pwCommuIndex_p: *mut WORD,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (NULL or a writable WORD).
     let out = c_try!(unsafe { ptr::out(pwCommuIndex_p) });
     check_config(out)
@@ -117,9 +130,13 @@ fn check_config(out: Out<WORD>) -> tCopKernel {
 /// # Safety
 /// As `CcmCheckSrdoConfig`.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn SrdoCheckConfig(pwCommuIndex_p: *mut WORD) -> tCopKernel {
+pub unsafe extern "C" fn SrdoCheckConfig(
+    #[cfg(multi_instance)] pInstance: tCopPtrInstance,
+    pwCommuIndex_p: *mut WORD,
+) -> tCopKernel {
+    instance::mco_enter!(pInstance);
     // SAFETY: same contract.
-    unsafe { CcmCheckSrdoConfig(pwCommuIndex_p) }
+    unsafe { instance::here!(CcmCheckSrdoConfig, pwCommuIndex_p) }
 }
 
 /// `CcmSendGfc` (only with `SRDO_USE_GFC`): sends the global fail-safe
@@ -128,7 +145,8 @@ pub unsafe extern "C" fn SrdoCheckConfig(pwCommuIndex_p: *mut WORD) -> tCopKerne
 /// not 1, the driver's code when it refuses the frame.
 #[cfg(srdo_use_gfc)]
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmSendGfc() -> tCopKernel {
+pub extern "C" fn CcmSendGfc(#[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     code(global::with(|i| {
         let Instance { stack, port, .. } = i;
         let state = stack.nmt_state();
@@ -139,8 +157,9 @@ pub extern "C" fn CcmSendGfc() -> tCopKernel {
 /// `SrdoSendGfc`: the module function behind `CcmSendGfc`.
 #[cfg(srdo_use_gfc)]
 #[unsafe(no_mangle)]
-pub extern "C" fn SrdoSendGfc() -> tCopKernel {
-    CcmSendGfc()
+pub extern "C" fn SrdoSendGfc(#[cfg(multi_instance)] pInstance: tCopPtrInstance) -> tCopKernel {
+    instance::mco_enter!(pInstance);
+    instance::here!(CcmSendGfc,)
 }
 
 /// `CcmGetSrdoState`: reads the status byte of an SRDO (manual 2.5.3).
@@ -150,9 +169,11 @@ pub extern "C" fn SrdoSendGfc() -> tCopKernel {
 /// `pbSrdoState_p` must be NULL or valid for writing a byte.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmGetSrdoState(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     pbSrdoState_p: *mut BYTE,
     wSrdoCommuIndex_p: WORD,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (NULL or a writable byte).
     let out = c_try!(unsafe { ptr::out(pbSrdoState_p) });
     get_state(out, wSrdoCommuIndex_p)
@@ -177,17 +198,24 @@ fn get_state(out: Out<BYTE>, idx: WORD) -> tCopKernel {
 /// As `CcmGetSrdoState`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn SrdoGetState(
+    #[cfg(multi_instance)] pInstance: tCopPtrInstance,
     pbSrdoState_p: *mut BYTE,
     wSrdoCommuIndex_p: WORD,
 ) -> tCopKernel {
+    instance::mco_enter!(pInstance);
     // SAFETY: same contract.
-    unsafe { CcmGetSrdoState(pbSrdoState_p, wSrdoCommuIndex_p) }
+    unsafe { instance::here!(CcmGetSrdoState, pbSrdoState_p, wSrdoCommuIndex_p) }
 }
 
 /// `CcmSetSrdoState`: writes bits 4-7 of the status byte (bits 0-3 are
 /// reserved and stay 0). kCopSrdoNotExist.
 #[unsafe(no_mangle)]
-pub extern "C" fn CcmSetSrdoState(bSrdoState_p: BYTE, wSrdoCommuIndex_p: WORD) -> tCopKernel {
+pub extern "C" fn CcmSetSrdoState(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
+    bSrdoState_p: BYTE,
+    wSrdoCommuIndex_p: WORD,
+) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // The reserved bits 0-3 of an SRDO's status byte are always 0, so
     // `merge_state` keeps nothing of the old byte on the fast path.
     let fast = |s: &mut u8| *s = bSrdoState_p & !crate::srdo::status::RESERVED_MASK;
@@ -201,8 +229,13 @@ pub extern "C" fn CcmSetSrdoState(bSrdoState_p: BYTE, wSrdoCommuIndex_p: WORD) -
 
 /// `SrdoSetState`: the module function behind `CcmSetSrdoState`.
 #[unsafe(no_mangle)]
-pub extern "C" fn SrdoSetState(bSrdoState_p: BYTE, wSrdoCommuIndex_p: WORD) -> tCopKernel {
-    CcmSetSrdoState(bSrdoState_p, wSrdoCommuIndex_p)
+pub extern "C" fn SrdoSetState(
+    #[cfg(multi_instance)] pInstance: tCopPtrInstance,
+    bSrdoState_p: BYTE,
+    wSrdoCommuIndex_p: WORD,
+) -> tCopKernel {
+    instance::mco_enter!(pInstance);
+    instance::here!(CcmSetSrdoState, bSrdoState_p, wSrdoCommuIndex_p)
 }
 
 /// The communication parameters of `idx` as the C structure.
@@ -251,10 +284,12 @@ fn get_mapp(idx: WORD, p: Out<tSrdoMappParam>) -> tCopKernel {
 /// Non-NULL pointers must be valid for writing their structure.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmGetSrdoParam(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     wSrdoCommuIndex_p: WORD,
     pSrdoCommuParam_p: *mut tSrdoCommuParam,
     pSrdoMappParam_p: *mut tSrdoMappParam,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     // SAFETY: the caller's contract (each NULL, skipped, or writable).
     let (commu, mapp) = unsafe { (ptr::out(pSrdoCommuParam_p), ptr::out(pSrdoMappParam_p)) };
     get_param(wSrdoCommuIndex_p, commu.ok(), mapp.ok())
@@ -302,9 +337,11 @@ fn get_param(
 /// `pSrdoCommuParam_p` must be NULL or valid for writing.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn SrdoGetCommuParam(
+    #[cfg(multi_instance)] pInstance: tCopPtrInstance,
     wSrdoCommuIndex_p: WORD,
     pSrdoCommuParam_p: *mut tSrdoCommuParam,
 ) -> tCopKernel {
+    instance::mco_enter!(pInstance);
     // SAFETY: the caller's contract (NULL or writable).
     let out = c_try!(unsafe { ptr::out(pSrdoCommuParam_p) });
     get_commu(wSrdoCommuIndex_p, out)
@@ -318,9 +355,11 @@ pub unsafe extern "C" fn SrdoGetCommuParam(
 #[cfg(not(srdo_static_mapping))]
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn SrdoGetMappParam(
+    #[cfg(multi_instance)] pInstance: tCopPtrInstance,
     wSrdoCommuIndex_p: WORD,
     pSrdoMappParam_p: *mut tSrdoMappParam,
 ) -> tCopKernel {
+    instance::mco_enter!(pInstance);
     // SAFETY: the caller's contract (NULL or writable).
     let out = c_try!(unsafe { ptr::out(pSrdoMappParam_p) });
     get_mapp(wSrdoCommuIndex_p, out)
@@ -333,7 +372,12 @@ pub unsafe extern "C" fn SrdoGetMappParam(
 /// # Safety
 /// `pwCrc_p` must be NULL or valid for writing a WORD.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn CcmCalcSrdoCrc(wCommuIndex_p: WORD, pwCrc_p: *mut WORD) -> tCopKernel {
+pub unsafe extern "C" fn CcmCalcSrdoCrc(
+    #[cfg(multi_instance)] pInstance: tCopPtrInstance,
+    wCommuIndex_p: WORD,
+    pwCrc_p: *mut WORD,
+) -> tCopKernel {
+    instance::mco_enter!(pInstance);
     // SAFETY: the caller's contract (NULL or a writable WORD).
     let out = c_try!(unsafe { ptr::out(pwCrc_p) });
     calc_crc(wCommuIndex_p, out)
@@ -351,10 +395,12 @@ fn calc_crc(idx: WORD, out: Out<WORD>) -> tCopKernel {
 /// `pwCrc_p` must be NULL or valid for writing a WORD.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn SrdoCalcSrdoCrc(
+    #[cfg(multi_instance)] pInstance: tCopPtrInstance,
     wCommuIndex_p: WORD,
     pSrdoEntry_p: *mut c_void,
     pwCrc_p: *mut WORD,
 ) -> tCopKernel {
+    instance::mco_enter!(pInstance);
     // SAFETY: the caller's contract (NULL or a writable WORD); the entry
     // pointer is only compared with NULL.
     let out = c_try!(unsafe { ptr::out(pwCrc_p) });
@@ -384,10 +430,12 @@ fn calc_crc_without_entry(idx: WORD, entry_given: bool, out: Out<WORD>) -> tCopK
 #[cfg(srdo_static_mapping)]
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn CcmStaticDefineSrdoVarFields(
+    #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     wCommuIndex_p: WORD,
     pNormalData_p: *mut c_void,
     pInversData_p: *mut c_void,
 ) -> tCopKernel {
+    instance::ccm_enter!(InstanceHandle);
     if pNormalData_p.is_null() || pInversData_p.is_null() {
         return CopKernel::InvalidParam.code();
     }
@@ -417,12 +465,21 @@ pub unsafe extern "C" fn CcmStaticDefineSrdoVarFields(
 #[cfg(srdo_static_mapping)]
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn SrdoStaticDefineVarFields(
+    #[cfg(multi_instance)] pInstance: tCopPtrInstance,
     wCommuIndex_p: WORD,
     pNormalData_p: *mut c_void,
     pInversData_p: *mut c_void,
 ) -> tCopKernel {
+    instance::mco_enter!(pInstance);
     // SAFETY: same contract.
-    unsafe { CcmStaticDefineSrdoVarFields(wCommuIndex_p, pNormalData_p, pInversData_p) }
+    unsafe {
+        instance::here!(
+            CcmStaticDefineSrdoVarFields,
+            wCommuIndex_p,
+            pNormalData_p,
+            pInversData_p
+        )
+    }
 }
 
 /// `SrdoInit` (manual 2.11.1): `CcmInitCANopen` initialises the SRDO module
@@ -435,7 +492,11 @@ pub unsafe extern "C" fn SrdoStaticDefineVarFields(
 /// # Safety
 /// `pInitParam_p` must be NULL or point to a valid `tSrdoInitParam`.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn SrdoInit(pInitParam_p: *const tSrdoInitParam) -> tCopKernel {
+pub unsafe extern "C" fn SrdoInit(
+    #[cfg(multi_instance)] pInstancePtr: *mut tCopPtrInstance,
+    pInitParam_p: *const tSrdoInitParam,
+) -> tCopKernel {
+    instance::mco_enter_ptr!(pInstancePtr);
     // SAFETY: the caller's contract (NULL or a valid tSrdoInitParam).
     let p = c_try!(unsafe { ptr::read(pInitParam_p) });
     init(&p)
@@ -452,20 +513,29 @@ fn init(p: &tSrdoInitParam) -> tCopKernel {
     }))
 }
 
-/// `SrdoAddInstance`: single-instance build — behaves like `SrdoInit`.
+/// `SrdoAddInstance`: behaves like `SrdoInit` (the SRDO module of an
+/// instance is created by `CcmInitCANopen`).
 ///
 /// # Safety
 /// As `SrdoInit`.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn SrdoAddInstance(pInitParam_p: *const tSrdoInitParam) -> tCopKernel {
-    // SAFETY: same contract.
-    unsafe { SrdoInit(pInitParam_p) }
+pub unsafe extern "C" fn SrdoAddInstance(
+    #[cfg(multi_instance)] pInstancePtr: *mut tCopPtrInstance,
+    pInitParam_p: *const tSrdoInitParam,
+) -> tCopKernel {
+    instance::mco_enter_ptr!(pInstancePtr);
+    // SAFETY: the caller's contract (NULL or a valid tSrdoInitParam).
+    let p = c_try!(unsafe { ptr::read(pInitParam_p) });
+    init(&p)
 }
 
 /// `SrdoDeleteInstance`: stops every SRDO (as leaving OPERATIONAL does);
 /// they restart with the next transition to OPERATIONAL.
 #[unsafe(no_mangle)]
-pub extern "C" fn SrdoDeleteInstance() -> tCopKernel {
+pub extern "C" fn SrdoDeleteInstance(
+    #[cfg(multi_instance)] pInstance: tCopPtrInstance,
+) -> tCopKernel {
+    instance::mco_enter!(pInstance);
     let now = TgtClock.now();
     code(global::with(|i| {
         let node = i.stack.node_id();
@@ -483,7 +553,11 @@ pub extern "C" fn SrdoDeleteInstance() -> tCopKernel {
 /// contradicts it gives kCopSrdoNmtError, so the module can never run out
 /// of step with the node.
 #[unsafe(no_mangle)]
-pub extern "C" fn SrdoNmtEvent(NmtEvent_p: tNmtEvent) -> tCopKernel {
+pub extern "C" fn SrdoNmtEvent(
+    #[cfg(multi_instance)] pInstance: tCopPtrInstance,
+    NmtEvent_p: tNmtEvent,
+) -> tCopKernel {
+    instance::mco_enter!(pInstance);
     code(global::with(|i| {
         let s = i.stack.nmt_state();
         let consistent = match NmtEvent_p {
@@ -506,6 +580,7 @@ pub extern "C" fn SrdoNmtEvent(NmtEvent_p: tNmtEvent) -> tCopKernel {
 /// module; returns kCopSrdoNotHandledInApp when an error reported in this
 /// cycle was not acknowledged by `AppSrdoError` (status bits 6-7 = 10).
 #[unsafe(no_mangle)]
-pub extern "C" fn SrdoProcess() -> tCopKernel {
-    super::ccm::CcmProcess()
+pub extern "C" fn SrdoProcess(#[cfg(multi_instance)] pInstance: tCopPtrInstance) -> tCopKernel {
+    instance::mco_enter!(pInstance);
+    instance::here!(super::ccm::CcmProcess,)
 }

@@ -136,7 +136,7 @@ impl Node {
         let stack = Stack::new(producer::od().unwrap(), 1).unwrap();
         let instance = Instance {
             stack,
-            port: CdrvPort,
+            port: CdrvPort::default(),
             callbacks,
             tables: Default::default(),
         };

@@ -15,7 +15,12 @@ macro_rules! stack_callbacks {
             /// # Safety
             /// Called by the stack with a valid parameter block.
             #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn $name(pParam_p: *mut ObdCbParam) -> tCopKernel {
+            pub unsafe extern "C" fn $name(
+                #[cfg(multi_instance)]
+                #[allow(unused_variables)]
+                InstanceHandle: super::types::tCopInstanceHdl,
+                pParam_p: *mut ObdCbParam,
+            ) -> tCopKernel {
                 let _ = pParam_p;
                 0
             }

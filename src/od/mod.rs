@@ -25,7 +25,9 @@ pub mod value;
 
 pub use types::{Access, DataType, Encoding};
 
-pub use table::{CbArg, ObdCallback, ObdEntry, ObdSize, ObdSubEntry, ObdVarEntry, Storage, kind};
+pub use table::{
+    CallbackHandle, CbArg, ObdCallback, ObdEntry, ObdSize, ObdSubEntry, ObdVarEntry, Storage, kind,
+};
 
 use core::sync::atomic::AtomicU8;
 use core::sync::atomic::Ordering::Relaxed;
@@ -471,6 +473,9 @@ uint_value!(u8, u16, u32, u64);
 pub struct ObjectDictionary {
     /// Generic, manufacturer, device and user part ([`Part::slot`]).
     parts: [PartTable; 4],
+    /// What the application's OBD and variable callbacks receive first
+    /// ([`CallbackHandle`]).
+    handle: CallbackHandle,
 }
 
 /// Number of index ranges of a part's lookup directory ([`PartTable`]).
@@ -719,6 +724,7 @@ impl ObjectDictionary {
     pub const fn empty() -> Self {
         ObjectDictionary {
             parts: [PartTable::EMPTY; 4],
+            handle: table::FIRST_HANDLE,
         }
     }
 
@@ -737,6 +743,17 @@ impl ObjectDictionary {
             *slot = PartTable::new(table);
         }
         Ok(od)
+    }
+
+    /// Sets what the application's OBD and variable callbacks receive first
+    /// (the C API's instance handle in a multi-instance build).
+    pub fn set_callback_handle(&mut self, handle: CallbackHandle) {
+        self.handle = handle;
+    }
+
+    /// What the application's OBD and variable callbacks receive first.
+    pub fn callback_handle(&self) -> CallbackHandle {
+        self.handle
     }
 
     /// Replaces the user part (dynamic OD); checked like the static parts.
@@ -901,7 +918,7 @@ impl ObjectDictionary {
     pub fn notify_sdo_abort(&self, index: u16, sub: u8, code: u32) {
         if let Some(entry) = self.find_entry(index) {
             let mut c = code.to_ne_bytes();
-            let _ = entry.notify(event::ABORT_SDO, sub, CbArg::Data(&mut c));
+            let _ = entry.notify(self.handle, event::ABORT_SDO, sub, CbArg::Data(&mut c));
         }
     }
 
@@ -909,7 +926,7 @@ impl ObjectDictionary {
     pub fn locate(&self, index: u16, sub: u8) -> OdResult<Object> {
         let obj = self.find(index, sub)?;
         obj.entry
-            .notify(event::CHECK_EXIST, sub, CbArg::None)
+            .notify(self.handle, event::CHECK_EXIST, sub, CbArg::None)
             .map_err(|_| OdError::SUBINDEX)?;
         Ok(obj)
     }
@@ -1003,7 +1020,7 @@ impl ObjectDictionary {
             // Strings and domains: the callback may resize or move the
             // application's buffer before the length is checked.
             obj.entry
-                .string_domain_event(obj.sub, obj.storage()?, data.len())
+                .string_domain_event(self.handle, obj.sub, obj.storage()?, data.len())
                 .map_err(|(abort, ret)| OdError {
                     kernel: kernel_from_callback(ret),
                     abort,
@@ -1016,7 +1033,7 @@ impl ObjectDictionary {
         self.store(&obj, &staged, data)?;
         hooks.after_store(self, &obj);
         if let Ok(Storage::Var(v)) = obj.storage() {
-            v.notify();
+            v.notify(self.handle);
         }
         self.post_write_callback(&obj);
         Ok(())
@@ -1064,7 +1081,7 @@ impl ObjectDictionary {
 
     fn callback(&self, obj: &Object, ev: u8, arg: CbArg<'_>) -> OdResult {
         obj.entry
-            .notify(ev, obj.sub, arg)
+            .notify(self.handle, ev, obj.sub, arg)
             .map_err(|(abort, ret)| OdError {
                 kernel: kernel_from_callback(ret),
                 abort,

@@ -83,11 +83,58 @@ pub struct ObdVStringDomain {
     pub m_pData: *mut c_void,
 }
 
-/// `tObdCallback` (single-instance form).
-pub type ObdCallback = unsafe extern "C" fn(param: *mut ObdCbParam) -> u32;
+/// What an OBD or variable callback of the application receives before its
+/// own argument (`CCM_DECL_INSTANCE_HDL_`): the instance handle of the C
+/// API in a multi-instance build (`COP_MAX_INSTANCES` > 1), nothing
+/// otherwise. The dictionary keeps it for its callbacks
+/// ([`crate::od::ObjectDictionary::set_callback_handle`]); it knows nothing
+/// else of instances.
+#[cfg(multi_instance)]
+pub type CallbackHandle = u8;
+/// What an OBD or variable callback receives before its own argument:
+/// nothing in a single-instance build.
+#[cfg(not(multi_instance))]
+pub type CallbackHandle = NoHandle;
 
-/// `tVarCallback` (single-instance form).
+/// The [`CallbackHandle`] of a single-instance build: no value.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct NoHandle;
+/// The [`CallbackHandle`] of a dictionary nobody set one for (instance 0).
+#[cfg(multi_instance)]
+pub const FIRST_HANDLE: CallbackHandle = 0;
+/// The [`CallbackHandle`] of a dictionary nobody set one for.
+#[cfg(not(multi_instance))]
+pub const FIRST_HANDLE: CallbackHandle = NoHandle;
+
+/// `tObdCallback`.
+#[cfg(not(multi_instance))]
+pub type ObdCallback = unsafe extern "C" fn(param: *mut ObdCbParam) -> u32;
+/// `tObdCallback` (multi-instance form).
+#[cfg(multi_instance)]
+pub type ObdCallback = unsafe extern "C" fn(handle: CallbackHandle, param: *mut ObdCbParam) -> u32;
+
+/// `tVarCallback`.
+#[cfg(not(multi_instance))]
 pub type VarCallback = unsafe extern "C" fn(param: *mut c_void) -> u32;
+/// `tVarCallback` (multi-instance form).
+#[cfg(multi_instance)]
+pub type VarCallback = unsafe extern "C" fn(handle: CallbackHandle, param: *mut c_void) -> u32;
+
+/// Calls a callback of one of the two types above with `handle` first in a
+/// multi-instance build.
+#[cfg(multi_instance)]
+macro_rules! call_back {
+    ($cb:expr, $h:expr, $arg:expr) => {
+        $cb($h, $arg)
+    };
+}
+#[cfg(not(multi_instance))]
+macro_rules! call_back {
+    ($cb:expr, $h:expr, $arg:expr) => {{
+        let NoHandle = $h;
+        $cb($arg)
+    }};
+}
 
 /// `tObdSubEntry` (with this library's `m_bKind` and `m_dwSize`).
 #[repr(C)]
@@ -522,6 +569,7 @@ impl ObdEntry {
     /// change there is ignored. `Err` as in [`ObdEntry::notify`].
     pub fn string_domain_event(
         &self,
+        handle: CallbackHandle,
         sub: u8,
         storage: Storage,
         download: usize,
@@ -543,6 +591,7 @@ impl ObdEntry {
             m_pData: ptr,
         };
         self.notify(
+            handle,
             crate::od::event::WR_STRING_DOMAIN,
             sub,
             CbArg::StringDomain(&mut p),
@@ -559,7 +608,13 @@ impl ObdEntry {
     /// Calls the entry's callback (if any) with `event`. `Err` carries the
     /// abort code the callback set (0x08000020 when it refused without one)
     /// and the `tCopKernel` it returned.
-    pub fn notify(&self, event: u8, sub: u8, arg: CbArg<'_>) -> Result<(), (u32, u32)> {
+    pub fn notify(
+        &self,
+        handle: CallbackHandle,
+        event: u8,
+        sub: u8,
+        arg: CbArg<'_>,
+    ) -> Result<(), (u32, u32)> {
         let Some(cb) = self.m_fpCallback else {
             return Ok(());
         };
@@ -580,7 +635,7 @@ impl ObdEntry {
         // application registered in its objdict.h; `param` is valid for the
         // duration of the call and m_pArg points to live data of the kind the
         // event documents.
-        let ret = unsafe { cb(&mut param) };
+        let ret = unsafe { call_back!(cb, handle, &mut param) };
         if ret == 0 {
             Ok(())
         } else {
@@ -643,7 +698,7 @@ impl ObdVarEntry {
     /// worst-case stack analysis resolves like an OBD callback
     /// (scripts/tms570/run.sh, docs/tms570.md).
     #[inline(never)]
-    pub fn notify(&self) -> u32 {
+    pub fn notify(&self, handle: CallbackHandle) -> u32 {
         let f = self.m_fpCallback.load(Ordering::Relaxed);
         if f.is_null() {
             return 0;
@@ -652,7 +707,7 @@ impl ObdVarEntry {
         // a tVarCallback function pointer of the application.
         let cb: VarCallback = unsafe { core::mem::transmute::<*mut c_void, VarCallback>(f) };
         // SAFETY: calling the application's callback with its own argument.
-        unsafe { cb(self.m_pArg.load(Ordering::Relaxed)) }
+        unsafe { call_back!(cb, handle, self.m_pArg.load(Ordering::Relaxed)) }
     }
 }
 

@@ -1524,7 +1524,7 @@ fn apply(od: &ObjectDictionary, ch: &RxChannel, p: &Payload) -> Result<(), CopKe
     }
     for (obj, _) in staged.iter().flatten() {
         if let Ok(Storage::Var(v)) = obj.storage() {
-            v.notify();
+            v.notify(od.callback_handle());
         }
     }
     Ok(())
