@@ -9,6 +9,7 @@
 # 2. examples_c/safety_demo - a CiA 304 safety network: a sensor (node 1)
 #    sends E-stop state and speed limit in SRDO 1, an actuator (node 2)
 #    drives a safe output; E-stop with GFC, one injected bus fault, recovery.
+#    Its traffic is written to build/safety_demo.pcap and build/safety_demo.log.
 #
 # Installs the prerequisites (scripts/setup.sh --demo), configures and
 # builds with CMake into build/ and runs both. Idempotent: a second run
@@ -39,6 +40,10 @@ say "demo 2 of 2: safety network (examples_c/safety_demo, target run_safety_demo
      '>>> SAFE OUTPUT ON', the E-stop with the global fail-safe command (001),
      the lost inverted frame (SRVT timeout, status handshake 0x50 -> 0xB0),
      and the recovery after RESET."
-cmake --build build --target run_safety_demo
+COP_SIM_PCAP="$PWD/build/safety_demo.pcap" COP_SIM_CANDUMP="$PWD/build/safety_demo.log" \
+    cmake --build build --target run_safety_demo
 
-say "done: both demos ran (build/examples_c/io_node/io_node, build/examples_c/safety_demo/safety_demo)"
+say "done: both demos ran (build/examples_c/io_node/io_node, build/examples_c/safety_demo/safety_demo)
+     The safety demo's traffic: build/safety_demo.pcap (Wireshark, tshark) and
+     build/safety_demo.log (candump -l, canplayer). With the SRDO dissector:
+       tshark -2 -X lua_script:tools/wireshark/cop_srdo.lua -o cop_srdo.srvt_ms:10 -r build/safety_demo.pcap"

@@ -74,8 +74,10 @@ if [ "$MODE" = "--evidence" ]; then
 fi
 
 apt_install gcc-arm-none-eabi binutils-arm-none-eabi \
-    gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user valgrind
-# qemu-user provides qemu-armeb, which runs the TMS570 target programs (scripts/tms570.sh)
+    gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user valgrind tshark can-utils
+# qemu-user provides qemu-armeb, which runs the TMS570 target programs (scripts/tms570.sh);
+# tshark runs the SRDO dissector (tools/wireshark) over the captures of the simulated bus,
+# can-utils' log2asc reads their candump -l logs with canplayer's parser
 
 rustup component list --installed 2>/dev/null | grep -q '^rust-src' || { log "rustup: rust-src"; rustup component add rust-src; }
 rustup component list --installed 2>/dev/null | grep -q '^clippy' || { log "rustup: clippy"; rustup component add clippy; }

@@ -2,7 +2,7 @@
 # The complete test run: everything CI checks, in one command.
 #   scripts/test.sh            all stages
 #   scripts/test.sh rust c     only the named stages
-# Stages: lint rust faults header c peer target bigendian miri fuzz bench
+# Stages: lint rust faults header c wireshark peer target bigendian miri fuzz bench
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
@@ -13,7 +13,7 @@ scripts/setup.sh
 
 STAGES=("$@")
 if [ "${#STAGES[@]}" -eq 0 ]; then
-    STAGES=(lint rust faults header c peer target bigendian miri fuzz bench)
+    STAGES=(lint rust faults header c wireshark peer target bigendian miri fuzz bench)
 fi
 
 stage() { printf '\n=== %s ===\n' "$*"; }
@@ -29,6 +29,7 @@ run_stage() {
         python3 -m unittest discover -q -s scripts/evidence -p 'test_*.py'
         cargo clippy --all-targets -- -D warnings
         cargo clippy --lib --no-default-features -- -D warnings
+        CARGO_TARGET_DIR=target/embedded-can cargo clippy --all-targets --features embedded-can -- -D warnings
         cargo clippy --lib --features srdo-static-mapping,srdo-granularity-16,pdo-bit-mapping,pdo-granularity-64 -- -D warnings
         CARGO_TARGET_DIR=target/dcf2bin cargo fmt --manifest-path tools/dcf2bin/Cargo.toml -- --check
         CARGO_TARGET_DIR=target/dcf2bin cargo clippy --manifest-path tools/dcf2bin/Cargo.toml --all-targets -- -D warnings
@@ -40,6 +41,12 @@ run_stage() {
         CARGO_TARGET_DIR=target/variant-a cargo test -q --features srdo-static-mapping,srdo-granularity-16,cdrv-timestamp,pdo-bit-mapping
         stage "cargo test (no GFC, no program monitor, SRVT checked before 2nd frame, dummy mapping, gaps, PDO bit mapping with granularity 64)"
         CARGO_TARGET_DIR=target/variant-b cargo test -q --no-default-features --features srdo-check-srvt-before-1strx,srdo-dummy-mapping,srdo-allow-gaps,pdo-bit-mapping,pdo-granularity-64
+        stage "embedded-can adapter, the Rust safety sensor and actuator through it, rustdoc"
+        CARGO_TARGET_DIR=target/embedded-can cargo test -q --features embedded-can --lib port::embedded
+        CARGO_TARGET_DIR=target/embedded-can cargo run -q --example safety_sensor --features embedded-can
+        CARGO_TARGET_DIR=target/embedded-can cargo run -q --example safety_actuator --features embedded-can
+        RUSTDOCFLAGS=-Dwarnings cargo doc -q --no-deps
+        CARGO_TARGET_DIR=target/embedded-can RUSTDOCFLAGS=-Dwarnings cargo doc -q --no-deps --features std,embedded-can
         stage "dcf2bin (host tool; its python-canopen comparisons need scripts/setup.sh)"
         CARGO_TARGET_DIR=target/dcf2bin cargo test -q --manifest-path tools/dcf2bin/Cargo.toml
         ;;
@@ -58,6 +65,24 @@ run_stage() {
         cmake -S . -B build -DCMAKE_BUILD_TYPE=Debug >/dev/null
         cmake --build build -j2
         ctest --test-dir build --output-on-failure -j2
+        ;;
+    wireshark)
+        # tshark with tools/wireshark/cop_srdo.lua over captures of the
+        # simulated bus: one per fault class, the C safety demo, the Rust
+        # safety examples.
+        stage "Wireshark dissector over the captures of the simulated bus"
+        caps=target/captures
+        rm -rf "$caps" && mkdir -p "$caps/rust"
+        cargo run -q --example fault_captures -- "$caps/faults"
+        for ex in safety_sensor safety_actuator; do
+            COP_SIM_PCAP="$caps/rust/$ex.pcap" COP_SIM_CANDUMP="$caps/rust/$ex.log" \
+                CARGO_TARGET_DIR=target/embedded-can cargo run -q --example "$ex" --features embedded-can >/dev/null
+        done
+        cmake -S . -B build -DCMAKE_BUILD_TYPE=Debug >/dev/null
+        cmake --build build -j2 --target safety_demo >/dev/null
+        COP_CAPTURES="$caps/faults" COP_SAFETY_DEMO=build/examples_c/safety_demo/safety_demo \
+            COP_RUST_CAPTURES="$caps/rust" \
+            python3 -m unittest discover -v -s tools/wireshark -p 'test_*.py'
         ;;
     peer)
         [ -x scripts/peer.sh ] || { echo "peer tests: scripts/peer.sh missing"; exit 1; }

@@ -3,9 +3,14 @@
 //! Every protocol module reaches the CAN controller and the time only through
 //! these traits. On a target the ffi layer implements them with the SYS TEC
 //! driver (`CdrvWriteMsg`, `CdrvReadMsg`, ...) and `TgtGetTickCount`; tests
-//! and examples use the simulated bus of [`crate::sim`].
+//! and examples use the simulated bus of `crate::sim` (host builds, feature `std`).
+//! With the feature `embedded-can`, `embedded` makes any `embedded-can`
+//! driver a [`CanPort`] and a plain tick function a [`Clock`].
 
 use crate::error::CopResult;
+
+#[cfg(feature = "embedded-can")]
+pub mod embedded;
 
 /// Stack ticks per millisecond: the SYS TEC tick is 100 µs.
 pub const TICKS_PER_MS: u32 = 10;

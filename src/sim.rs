@@ -6,14 +6,24 @@
 //! ([`SimBus::advance_ms`]), so every run is reproducible. Each frame is
 //! recorded in candump format (`  can0  702   [1]  00`). A fault filter can
 //! drop, change or duplicate frames on their way (fault injection).
+//!
+//! A bus writes a pcap file (SocketCAN, link type 227) and a `candump -l`
+//! log of its frames, with the simulated time as timestamps, when asked:
+//! [`SimBus::capture`], or the environment variables `COP_SIM_PCAP` and
+//! `COP_SIM_CANDUMP` naming the files for every bus the program creates
+//! ([`capture`]).
 
 use std::cell::RefCell;
 use std::collections::VecDeque;
+use std::io;
+use std::path::Path;
 use std::rc::Rc;
 
 use crate::error::{CopKernel, CopResult};
 use crate::port::{CanFrame, CanPort, Clock, PortStatus, Priority, RxFrame, Ticks};
 
+pub mod capture;
+pub mod fault_captures;
 pub mod faults;
 pub mod nvram;
 pub mod srdo_net;
@@ -50,6 +60,17 @@ struct Bus {
     echo: bool,
     filter: Option<FaultFilter>,
     sent: Vec<(usize, Ticks, CanFrame)>,
+    capture: Option<capture::Capture>,
+}
+
+impl Drop for Bus {
+    fn drop(&mut self) {
+        if let Some(c) = self.capture.as_mut() {
+            if let Err(e) = c.flush() {
+                eprintln!("sim: capture not written completely: {e}");
+            }
+        }
+    }
 }
 
 /// The shared bus.
@@ -89,8 +110,20 @@ impl Default for SimBus {
 }
 
 impl SimBus {
-    /// An empty bus at time 0.
+    /// An empty bus at time 0. When the environment names capture files
+    /// (`COP_SIM_PCAP`, `COP_SIM_CANDUMP`), the bus writes them from its
+    /// first frame on; a file that cannot be created is reported on
+    /// stderr and left out. Every new bus truncates them, so in a program
+    /// with several buses they hold the traffic of the last one.
     pub fn new() -> SimBus {
+        let capture = match capture::Capture::from_env() {
+            Some(Ok(c)) => Some(c),
+            Some(Err(e)) => {
+                eprintln!("sim: capture files of the environment not created: {e}");
+                None
+            }
+            None => None,
+        };
         SimBus(Rc::new(RefCell::new(Bus {
             now: Ticks(0),
             nodes: Vec::new(),
@@ -98,7 +131,34 @@ impl SimBus {
             echo: false,
             filter: None,
             sent: Vec::new(),
+            capture,
         })))
+    }
+
+    /// Writes every frame that reaches the bus from now on into a pcap
+    /// file (SocketCAN, link type 227) and/or a `candump -l` log; `None`
+    /// leaves that format out, both `None` stops capturing. The files are
+    /// created (truncated); what is buffered is written by
+    /// [`SimBus::flush_capture`] and when the bus is dropped.
+    pub fn capture(&self, pcap: Option<&Path>, candump: Option<&Path>) -> io::Result<()> {
+        let mut b = self.0.borrow_mut();
+        if let Some(old) = b.capture.as_mut() {
+            old.flush()?;
+        }
+        b.capture = if pcap.is_none() && candump.is_none() {
+            None
+        } else {
+            Some(capture::Capture::create(pcap, candump)?)
+        };
+        Ok(())
+    }
+
+    /// Writes out what the capture files have buffered.
+    pub fn flush_capture(&self) -> io::Result<()> {
+        match self.0.borrow_mut().capture.as_mut() {
+            Some(c) => c.flush(),
+            None => Ok(()),
+        }
     }
 
     /// Starts the clock at `t` (wrap tests).
@@ -216,6 +276,15 @@ impl SimBus {
             Delivery::Drop => 0,
             Delivery::Duplicate => 2,
         };
+        if let Some(c) = b.capture.as_mut() {
+            for _ in 0..copies {
+                if let Err(e) = c.record(now, &frame) {
+                    eprintln!("sim: capture stopped: {e}");
+                    b.capture = None;
+                    break;
+                }
+            }
+        }
         for (i, n) in b.nodes.iter_mut().enumerate() {
             if i == from {
                 continue;
@@ -348,6 +417,46 @@ mod tests {
         assert!(!b.take_rx_overrun());
         assert_eq!(b.receive().unwrap().frame.id.id(), 1);
         assert_eq!(b.receive(), None);
+    }
+
+    #[test]
+    fn capture_holds_what_reached_the_bus_with_bus_time() {
+        let dir = std::env::temp_dir();
+        let pcap = dir.join(format!("cop_sim_capture_{}.pcap", std::process::id()));
+        let log = dir.join(format!("cop_sim_capture_{}.log", std::process::id()));
+        let bus = SimBus::new();
+        bus.capture(Some(&pcap), Some(&log)).unwrap();
+        let mut a = bus.attach(8);
+        let _b = bus.attach(8);
+        bus.set_filter(Some(Box::new(|_, f: &mut CanFrame| match f.id.id() {
+            0x102 => Delivery::Drop,
+            0x103 => Delivery::Duplicate,
+            _ => Delivery::Deliver,
+        })));
+        for (ms, id) in [(0, 0x101), (2, 0x102), (3, 0x103)] {
+            bus.advance_ms(ms);
+            a.send(
+                &CanFrame::new(CanId::std_masked(id), &[0xA5]),
+                Priority::High,
+            )
+            .unwrap();
+        }
+        bus.flush_capture().unwrap();
+        let text = std::fs::read_to_string(&log).unwrap();
+        assert_eq!(
+            text,
+            "(1700000000.000000) can0 101#A5\n\
+             (1700000000.005000) can0 103#A5\n\
+             (1700000000.005000) can0 103#A5\n"
+        );
+        let bytes = std::fs::read(&pcap).unwrap();
+        // 24-byte file header, then per frame 16 bytes record header and
+        // 16 bytes SocketCAN record.
+        assert_eq!(bytes.len(), 24 + 3 * 32);
+        assert_eq!(&bytes[24 + 32 + 4..24 + 32 + 8], &5000u32.to_le_bytes());
+        assert_eq!(&bytes[24 + 32 + 16..24 + 32 + 20], &[0, 0, 1, 3]);
+        let _ = std::fs::remove_file(pcap);
+        let _ = std::fs::remove_file(log);
     }
 
     #[test]

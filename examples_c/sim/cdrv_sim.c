@@ -7,6 +7,9 @@
 #include <string.h>
 
 #include "cdrv_sim.h"
+#if defined(SIM_CAPTURE) && (SIM_CAPTURE != 0)
+#include "capture_sim.h"
+#endif
 
 #define SIM_STD_IDS   2048u   /* 11-bit identifiers */
 #define SIM_EXT_IDS   32u     /* 29-bit identifiers a node may define */
@@ -261,6 +264,9 @@ static int SimBus (tSimFrame* pFrame_p)
         pFrame_p->m_abData[0] ^= bSimCorruptXor_g;
     }
     SimTrace(pFrame_p);
+#if defined(SIM_CAPTURE) && (SIM_CAPTURE != 0)
+    SimCaptureFrame(pFrame_p);
+#endif
     if (pFrame_p->m_bSender != SIM_EXTERNAL_NODE)
     {
         if (uSimLogCount_g == SIM_LOG_MAX)
@@ -293,6 +299,9 @@ void SimReset (void)
     bSimInjectBus_g = 0;
 #if (COP_MAX_INSTANCES == 1)
     (void) CopSimSelectInstance(0);
+#endif
+#if defined(SIM_CAPTURE) && (SIM_CAPTURE != 0)
+    SimCaptureAtReset();
 #endif
 }
 

@@ -37,6 +37,11 @@
  *    nodes sent, oldest first;
  *  - a trace in candump format ("  can0  702   [1]  00"), printed to stdout
  *    while enabled (SimSetTrace);
+ *  - captures (host builds): a pcap file of SocketCAN frames (link type
+ *    227, for Wireshark / tshark) and a "candump -l" log (for canplayer) of
+ *    every frame that reaches the bus, timestamped with the virtual clock
+ *    (SimCapture, or the environment variables COP_SIM_PCAP and
+ *    COP_SIM_CANDUMP, read at the first SimReset);
  *  - fault hooks: refuse the next N transmissions of a node
  *    (CdrvWriteMsg returns kCopCdrvTxBuffHighOverrun / ...LowOverrun), drop
  *    the next frame with a given identifier (it never reaches the bus).
@@ -117,6 +122,15 @@ unsigned SimSentPending (void);
 /* The candump line of a frame ("  can0  702   [1]  00", no newline) into
  * pszLine_p (at least 64 bytes). Returns its length, -1 for bad arguments. */
 int SimFormatCandump (CONST tSimFrame* pFrame_p, char* pszLine_p, unsigned uSize_p);
+
+/* Captures (host builds, capture_sim.c): writes every frame that reaches the
+ * bus into a pcap file (SocketCAN, link type 227) and/or a candump -l log;
+ * NULL or "" leaves a format out, both closes the capture. The files are
+ * created (truncated). Timestamps: tick 0 of the first scenario is Unix
+ * time 1700000000 s, one tick 100 us, only forward (SimReset continues).
+ * 0, or -1 when a file cannot be created. Without SIM_CAPTURE (the TMS570
+ * target programs) it does not exist. */
+int SimCapture (const char* pszPcap_p, const char* pszCandump_p);
 
 /* Fault hooks. */
 void SimRefuseTx (BYTE bNode_p, unsigned uCount_p);   /* next uCount_p CdrvWriteMsg of the node fail */

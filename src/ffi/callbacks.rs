@@ -3,8 +3,8 @@
 //! stack's events and C function pointers.
 //!
 //! The instance registry ([`super::global`]) takes each event with its
-//! callback ([`Pending`]) and calls it with the stack released
-//! ([`Pending::call`], [`dispatch`]); the exported functions register the
+//! callback (`Pending`) and calls it with the stack released
+//! (`Pending::call`, `dispatch`); the exported functions register the
 //! callbacks (`CcmInitNmtmEx`, `CcmDefinePdoTab`, ...). This module imports
 //! neither of them.
 

@@ -5,17 +5,17 @@
 //!
 //! * Every exported `Ccm*` function has a first parameter
 //!   `#[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl` and opens with
-//!   [`ccm_enter!`]; a module function (`Srdo*`, `SdocGetTransmittedBytes`)
+//!   `ccm_enter!`; a module function (`Srdo*`, `SdocGetTransmittedBytes`)
 //!   has `#[cfg(multi_instance)] pInstance: tCopPtrInstance` and opens with
-//!   [`mco_enter!`]. In a single-instance build both macros are empty and
+//!   `mco_enter!`. In a single-instance build both macros are empty and
 //!   the parameter does not exist, so the prototypes and the code are those
 //!   of a build without instances.
 //! * `include/cop.h` is generated from the same functions
 //!   (`scripts/header.sh`): the parameter becomes `CCM_DECL_INSTANCE_HDL_` /
 //!   `MCO_DECL_INSTANCE_PTR_`, which `cop_types.h` defines for both forms.
 //! * The application's callbacks get the handle of the instance whose event
-//!   they handle: their types are written with [`app_fn!`] and called with
-//!   [`app_call!`]; the handle comes from the pump of that instance
+//!   they handle: their types are written with `app_fn!` and called with
+//!   `app_call!`; the handle comes from the pump of that instance
 //!   (`global`), never from a shared "current" setting a callback could
 //!   see in another state.
 //! * The driver gets the instance pointer its `CdrvInit` /

@@ -512,7 +512,7 @@ impl<const N: usize, W: 'static> core::ops::DerefMut for Channels<N, W> {
 /// `PDO_MAX_TXPDO_IN_OBD` TPDOs (0x1800+n), and the SYNC consumer.
 /// PDOs of the dictionary beyond these capacities are not served, except
 /// those of a dynamic OD whose channels lie in its pool
-/// ([`Pdo::attach_pooled`]).
+/// (`Pdo::attach_pooled`).
 #[derive(Debug)]
 pub struct Pdo {
     rx: Channels<PDO_MAX_RXPDO_IN_OBD, NoWatch>,

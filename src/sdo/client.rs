@@ -30,7 +30,7 @@
 //!   buffer aborts with 0x05040005 as in a segmented upload; the last
 //!   segment is written only when the end frame says how many of its bytes
 //!   are data, so no padding lands in the buffer. Sub-block confirmation
-//!   and the handling of lost segments follow [`super::block`].
+//!   and the handling of lost segments follow `super::block`.
 //! * The timeout runs from the last frame received, and in a download also
 //!   from the last segment of a sub-block sent.
 

@@ -66,7 +66,7 @@
 //! * Block download: the server offers [`SDO_BLOCKSIZE_DOWNLOAD`] segments
 //!   per sub-block and the CRC (it is used when the client supports it
 //!   too). Sub-block bookkeeping, confirmation and retransmission follow
-//!   [`super::block`]: a lost segment is asked for again through ackseq; a
+//!   `super::block`: a lost segment is asked for again through ackseq; a
 //!   lost last segment of a sub-block is confirmed after half the timeout
 //!   without segments.
 //! * Block upload: the client's blksize is used as given (1..=127, else

@@ -298,7 +298,7 @@ fn verify<N: NvMemory + ?Sized, R: Records + ?Sized>(
     Ok(info)
 }
 
-/// The newest slot that passes [`verify`]; the error of the newest
+/// The newest slot that passes `verify`; the error of the newest
 /// candidate when none passes (Foreign before NoImage).
 pub fn newest<N: NvMemory + ?Sized, R: Records + ?Sized>(
     nv: &mut N,
