@@ -291,6 +291,10 @@ mod tests {
     }
 
     #[test]
+    #[cfg_attr(
+        miri,
+        ignore = "writes a file; Miri runs isolated from the file system"
+    )]
     fn capture_clock_runs_on_across_a_tick_wrap() {
         let dir = std::env::temp_dir().join(format!("cop_capture_wrap_{}", std::process::id()));
         let mut c = Capture::create(None, Some(&dir)).unwrap();

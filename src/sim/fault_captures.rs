@@ -455,6 +455,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg_attr(miri, ignore = "writes files; Miri runs isolated from the file system")]
     fn the_consumer_reports_what_the_campaign_expects_of_each_class() {
         use CopKernel::*;
         let codes = |class| -> Vec<CopKernel> {
@@ -476,6 +477,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg_attr(miri, ignore = "writes files; Miri runs isolated from the file system")]
     fn frame_numbers_of_the_plan() {
         let c = capture(Class::LossNormal);
         // three pairs, then the lone inverted frame: frame 7
