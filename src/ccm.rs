@@ -887,6 +887,7 @@ impl Stack {
             }
             Internal::EnterState(s) => self.enter_state(s, port, now),
             Internal::SrdoCheckHandled(slot) => self.srdo.check_handled(slot, &mut self.queue),
+            Internal::SrdoOk(slot) => self.srdo.deliver_ok(slot, &mut self.queue),
         }
     }
 

@@ -133,6 +133,11 @@ pub enum Internal {
     /// After `AppSrdoError` for an SRDO (table slot): check the status bits
     /// 6-7 the application had to set (manual 2.9.2).
     SrdoCheckHandled(u8),
+    /// A successful transfer of an SRDO (table slot) whose event waits in
+    /// the queue: status bits 4-5 := 00 ("ok") when its turn comes, then
+    /// `Event::SrdoEvent`, so that its callback finds the status of its own
+    /// transfer whatever an earlier callback set meanwhile.
+    SrdoOk(u8),
 }
 
 /// An entry of the action queue.

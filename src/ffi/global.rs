@@ -21,7 +21,9 @@ use core::mem::MaybeUninit;
 use super::callbacks::{self, Callbacks};
 use super::driver::{CdrvPort, TgtClock};
 use super::instance::app_call;
-use super::types::tCopKernel;
+use core::sync::atomic::Ordering;
+
+use super::types::{tCcmErrorCallback, tCopKernel};
 use crate::ccm::Stack;
 use crate::error::{CopKernel, CopResult, to_code};
 use crate::event::Event;
@@ -432,15 +434,56 @@ pub fn with_srdo_event<R>(
     Ok(r)
 }
 
-/// Reports an error to the callback registered with
-/// `CcmRegisterErrorCallback` (if any).
-pub fn report_error(code: CopKernel) {
+/// Reports a code to the callback registered with
+/// `CcmRegisterErrorCallback` (if any): the code an application callback
+/// returned, unchanged, or one of the library's.
+pub fn report_error(code: tCopKernel) {
     let cb = with(|i| i.callbacks.error).ok().flatten();
     if let Some(cb) = cb {
         // SAFETY: the application's error callback; no argument object.
-        unsafe { app_call!(cb, current(); core::ptr::null_mut(), code.code()) };
+        unsafe { app_call!(cb, current(); core::ptr::null_mut(), code) };
     }
 }
+
+/// The error callbacks registered with `CcmRegisterErrorCallback` while a
+/// slot held no instance, one per slot: `CcmInitCANopen` gives the next
+/// instance of the slot the callback, so that it also hears of the
+/// refusals of the start-up events (`CcmRegisterErrorCallback` returns
+/// void and cannot refuse). Function pointers as atomic pointers, as the
+/// PDO callbacks are kept (`callbacks.rs`).
+static EARLY_ERROR_CALLBACKS: [core::sync::atomic::AtomicPtr<core::ffi::c_void>; MAX_INSTANCES] =
+    [const { core::sync::atomic::AtomicPtr::new(core::ptr::null_mut()) }; MAX_INSTANCES];
+
+/// `CcmRegisterErrorCallback` for the addressed slot: the instance's
+/// callback, or, while the slot holds no instance, the one its next
+/// instance starts with.
+pub fn register_error_callback(cb: tCcmErrorCallback) {
+    if with(|i| i.callbacks.error = cb).is_err() {
+        if let Some(early) = EARLY_ERROR_CALLBACKS.get(current()) {
+            early.store(
+                cb.map_or(core::ptr::null_mut(), |f| f as *mut _),
+                Ordering::Relaxed,
+            );
+        }
+    }
+}
+
+/// Takes the callback registered for the addressed slot before its
+/// instance existed ([`register_error_callback`]).
+pub fn take_early_error_callback() -> tCcmErrorCallback {
+    let p = EARLY_ERROR_CALLBACKS
+        .get(current())?
+        .swap(core::ptr::null_mut(), Ordering::Relaxed);
+    if p.is_null() {
+        return None;
+    }
+    // SAFETY: non-NULL entries were stored by `register_error_callback`
+    // from a tCcmErrorCallback function pointer of the application.
+    Some(unsafe { core::mem::transmute::<*mut core::ffi::c_void, ErrorCallbackFn>(p) })
+}
+
+/// The function type of a [`tCcmErrorCallback`].
+type ErrorCallbackFn = <tCcmErrorCallback as super::callbacks::OptionFn>::Fn;
 
 /// Hands out events one at a time: `next` runs inside the stack and yields
 /// the next event; the callback runs outside. Returns `true` when an SRDO

@@ -672,12 +672,25 @@ impl Srdo {
         q: &mut ActionQueue,
         direct: bool,
     ) -> Option<Event> {
-        let e = self.mark_ok(slot)?;
-        if !direct {
-            q.emit(e);
-        }
+        let e = if direct {
+            self.mark_ok(slot)
+        } else {
+            // The status is set when the event's turn comes
+            // (`Internal::SrdoOk`): an earlier event's callback may mark
+            // the SRDO processed meanwhile (manual 2.9.1).
+            q.schedule(Internal::SrdoOk(slot as u8));
+            None
+        };
         Self::progmon(q, pm);
-        direct.then_some(e)
+        e
+    }
+
+    /// `Internal::SrdoOk`: the success event of `slot` whose turn has come,
+    /// with the status of its transfer ("ok"), put in front of the queue.
+    pub fn deliver_ok(&mut self, slot: u8, q: &mut ActionQueue) {
+        if let Some(e) = self.mark_ok(usize::from(slot)) {
+            q.push_front(Action::Emit(e));
+        }
     }
 
     /// Status bits 4-5 := 00 (success); the event to report.

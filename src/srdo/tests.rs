@@ -213,6 +213,7 @@ fn run(
                 out.push(e);
             }
             Action::Do(Internal::SrdoCheckHandled(slot)) => srdo.check_handled(slot, q),
+            Action::Do(Internal::SrdoOk(slot)) => srdo.deliver_ok(slot, q),
             Action::Do(other) => panic!("unexpected internal action {other:?}"),
         }
     }
