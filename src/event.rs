@@ -190,6 +190,16 @@ impl ActionQueue {
         self.len == 0
     }
 
+    /// The action queued last, if any.
+    pub fn last(&self) -> Option<Action> {
+        if self.len == 0 {
+            return None;
+        }
+        self.buf
+            .get((self.head + self.len - 1) % QUEUE_CAPACITY)
+            .copied()
+    }
+
     /// Appends an action. Returns `false` (and drops nothing already queued)
     /// when the queue is full; callers size their steps so this never
     /// happens, and a test asserts it.
@@ -239,6 +249,22 @@ impl ActionQueue {
         self.head = (self.head + 1) % QUEUE_CAPACITY;
         self.len -= 1;
         a
+    }
+
+    /// Takes the first action when it is a program monitor event.
+    #[inline(always)]
+    pub fn pop_progmon(&mut self) -> Option<ProgMonEvent> {
+        if self.len == 0 {
+            return None;
+        }
+        let Some(Action::Emit(Event::ProgMon(e))) =
+            self.buf.get(self.head % QUEUE_CAPACITY).copied()
+        else {
+            return None;
+        };
+        self.head = (self.head + 1) % QUEUE_CAPACITY;
+        self.len -= 1;
+        Some(e)
     }
 
     /// Takes the first action when it is an event for the application

@@ -160,6 +160,7 @@ pub fn select(index: usize) -> bool {
 #[cfg(multi_instance)]
 pub struct Scope {
     previous: usize,
+    entered: usize,
 }
 
 #[cfg(multi_instance)]
@@ -167,18 +168,21 @@ impl Scope {
     /// Addresses instance `handle`; `Err(kCopIllegalInstance)` for a handle
     /// of no slot. Whether the slot holds an instance is decided by
     /// [`with`] (kCopIllegalInstance before `CcmInitCANopen` and after
-    /// `CcmShutDownCANopen`).
+    /// `CcmShutDownCANopen`). Addressing the instance already addressed
+    /// (every call of a one-instance loop, a callback's calls into its own
+    /// instance) writes nothing.
     #[inline(always)]
     pub fn enter(handle: u8) -> Result<Scope, CopKernel> {
-        let h = usize::from(handle);
-        if h >= MAX_INSTANCES {
+        let entered = usize::from(handle);
+        if entered >= MAX_INSTANCES {
             return Err(CopKernel::IllegalInstance);
         }
-        let previous = GLOBAL.current.replace(h);
-        if previous != h {
+        let previous = GLOBAL.current.get();
+        if previous != entered {
             forget_srdo_state();
+            GLOBAL.current.set(entered);
         }
-        Ok(Scope { previous })
+        Ok(Scope { previous, entered })
     }
 }
 
@@ -186,8 +190,9 @@ impl Scope {
 impl Drop for Scope {
     #[inline(always)]
     fn drop(&mut self) {
-        if GLOBAL.current.replace(self.previous) != self.previous {
+        if self.previous != self.entered {
             forget_srdo_state();
+            GLOBAL.current.set(self.previous);
         }
     }
 }
@@ -524,14 +529,27 @@ fn deliver(p: callbacks::Pending) {
 fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Option<Event>) -> bool {
     let mut not_handled = false;
     loop {
-        let now = TgtClock.now();
-        let step = with_inline(|i| next(i, now).map(|e| callbacks::Pending::take(e, &i.callbacks)));
+        // An event already queued (a run of program monitor events, the
+        // events of one frame) needs no time: the clock is read only when
+        // the stack has to work.
+        let step = with_inline(|i| {
+            let p = i
+                .stack
+                .queued_event()
+                .or_else(|| next(i, TgtClock.now()))
+                .map(|e| callbacks::Pending::take(e, &i.callbacks))?;
+            Some((p, ProgMonRun::take(p, &mut i.stack)))
+        });
         match step {
-            Ok(Some(p @ (callbacks::Pending::SrdoEvent(..) | callbacks::Pending::ProgMon(..)))) => {
+            Ok(Some((
+                p @ (callbacks::Pending::SrdoEvent(..) | callbacks::Pending::ProgMon(..)),
+                run,
+            ))) => {
                 // These never report an error (`Pending::call`).
                 let _ = p.call(current());
+                run.deliver(p);
             }
-            Ok(Some(p)) => {
+            Ok(Some((p, _))) => {
                 not_handled |= p.is_not_handled();
                 deliver(p);
             }
@@ -539,6 +557,55 @@ fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Optio
         }
     }
     not_handled
+}
+
+/// The program monitor events queued right behind one (a timer pass over
+/// the SRDOs queues one per SRDO), taken in the same borrow of the
+/// instance and handed to `AppProgMonEvent` one after the other: the
+/// calls, their order and their arguments are those of one event per pump
+/// step, without a return into the stack between them. What a callback
+/// queues meanwhile comes after them, as it would.
+#[derive(Clone, Copy)]
+struct ProgMonRun {
+    events: [u8; PROGMON_RUN],
+    len: u8,
+}
+
+/// The longest [`ProgMonRun`] (the action queue holds at most 16).
+const PROGMON_RUN: usize = crate::event::QUEUE_CAPACITY;
+
+impl ProgMonRun {
+    /// After `first` (a program monitor event): the ones queued behind it.
+    #[inline(always)]
+    fn take(first: callbacks::Pending, stack: &mut Stack) -> ProgMonRun {
+        let mut run = ProgMonRun {
+            events: [0; PROGMON_RUN],
+            len: 0,
+        };
+        if let callbacks::Pending::ProgMon(..) = first {
+            for slot in run.events.iter_mut() {
+                let Some(e) = stack.queued_progmon() else {
+                    break;
+                };
+                *slot = e as u8;
+                run.len += 1;
+            }
+        }
+        run
+    }
+
+    /// Calls the callback of `first` with each event of the run.
+    #[inline(always)]
+    fn deliver(&self, first: callbacks::Pending) {
+        if let callbacks::Pending::ProgMon(Some(cb), _) = first {
+            let instance = current();
+            for &e in self.events.iter().take(usize::from(self.len)) {
+                // SAFETY: AppProgMonEvent of the application (objdef.h),
+                // as `Pending::call` calls it; its result is not evaluated.
+                let _ = unsafe { app_call!(cb, instance; u32::from(e)) };
+            }
+        }
+    }
 }
 
 /// `CopSimSelectInstance`: simulation only (`sim-instances` builds, and so
