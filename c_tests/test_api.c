@@ -101,7 +101,7 @@ static void BeforeInit (void)
     CHECK_EQ(CcmObdGetNodeState(), 0);
     CHECK_EQ(CcmLsssGetNodeId(), 0);
     CHECK_RET(CcmNmtsExecCommand(kNmtCommStartRemoteNode), kCopIllegalInstance);
-    CcmRegisterErrorCallback(ErrorCallback);        /* no stack: ignored */
+    CcmRegisterErrorCallback(NULL);                 /* no stack: kept for the next one */
     CHECK_RET(CcmConfigHbp(100), kCopIllegalInstance);
     CHECK_RET(CcmConfigEmcp(0x80 + NODE_ID), kCopIllegalInstance);
     CHECK_RET(CcmSendEmergency(&Emcy), kCopIllegalInstance);
@@ -229,7 +229,7 @@ static void CoreApi (void)
     TestProcess(1);
     fNmtFails_g = 0;
     CHECK(uErrorCallbacks_g >= 1);
-    CHECK_EQ(LastError_g, kCopNmtStateError);
+    CHECK_EQ(LastError_g, kCopNoResource);          /* the code NmtCallback returned */
     CHECK_EQ(CcmObdGetNodeState(), kNodeStatePreOperational);
     CcmRegisterErrorCallback(NULL);
     uErrorCallbacks_g = 0;

@@ -11,7 +11,11 @@
  *  - an AppSrdoError that calls CcmWriteObject before it sets the status
  *    bits 6-7 to 10 (manual 2.9.2) has still handled the error: the library
  *    must not check the handshake before AppSrdoError has returned (no
- *    kCopSrdoNotHandledInApp).
+ *    kCopSrdoNotHandledInApp);
+ *  - an SRDO sent from inside AppSrdoEvent: its own AppSrdoEvent, which
+ *    comes after the outer one has returned, still finds the status "ok"
+ *    (bits 4-5 = 00) that the manual's AppSrdoEvent (2.9.1) requires,
+ *    although the outer callback has marked the SRDO processed meanwhile.
  */
 #include "test_util.h"
 
@@ -59,6 +63,39 @@ static void ErrorHookWithWrite (WORD wSrdoCommuIndex_p, tCopKernel ErrorCode_p)
     uErrorDepth_g--;
 }
 
+/* Manual 2.9.1, as manual_app.c writes it out: the status must say "ok"
+ * (bits 4-5 = 00) when AppSrdoEvent runs, else the application reports a
+ * safety-critical error; then the SRDO is marked processed. Before the
+ * handshake, the first event sends the SRDO once more from inside the
+ * callback. */
+static unsigned uSafetyCritical_g;
+static unsigned uSendsInside_g;
+static unsigned uEventDepth_g;
+static unsigned uEventMaxDepth_g;
+
+static void EventHookSendingAgain (WORD wSrdoCommuIndex_p)
+{
+    BYTE bSrdoState_l = 0;
+
+    uEventDepth_g++;
+    if (uEventDepth_g > uEventMaxDepth_g)
+    {
+        uEventMaxDepth_g = uEventDepth_g;
+    }
+    if ((CcmGetSrdoState(&bSrdoState_l, wSrdoCommuIndex_p) != kCopSuccessful) ||
+        ((bSrdoState_l & 0x30) != 0x00))
+    {
+        uSafetyCritical_g++;
+    }
+    if (uSendsInside_g == 0)
+    {
+        uSendsInside_g++;
+        CHECK_RET(CcmSendSrdo(wSrdoCommuIndex_p), kCopSuccessful);
+    }
+    CHECK_RET(CcmSetSrdoState((BYTE) (bSrdoState_l | 0x30), wSrdoCommuIndex_p), kCopSuccessful);
+    uEventDepth_g--;
+}
+
 int main (void)
 {
     static CONST tNmtEvent aExpected[5] = {
@@ -101,6 +138,22 @@ int main (void)
     CHECK_EQ(aTestSrdoErrors_g[0], kCopSrdoDataError);
     CHECK_EQ(aTestSrdoErrors_g[1], 0);      /* no kCopSrdoNotHandledInApp */
     CHECK_EQ(uErrorMaxDepth_g, 1);
+    pfnTestSrdoErrorHook_g = NULL;
+
+    /* 3. an SRDO sent from inside AppSrdoEvent */
+    SimAdvanceMs(5);                        /* the first-send delay */
+    TestProcess(1);
+    TestDrainSent();
+    TestSrdoClear();
+    pfnTestSrdoEventHook_g = EventHookSendingAgain;
+    CHECK_RET(CcmSendSrdo(0x1301), kCopSuccessful);
+    TestProcess(1);
+    pfnTestSrdoEventHook_g = NULL;
+    CHECK_EQ(uSendsInside_g, 1);
+    CHECK_EQ(uTestSrdoEvents_g, 2);         /* one per transmission */
+    CHECK_EQ(uSafetyCritical_g, 0);         /* each saw "ok" */
+    CHECK_EQ(uEventMaxDepth_g, 1);          /* one after the other */
+    CHECK_EQ(TestDrainSent(), 4);           /* two pairs */
 
     CHECK_RET(CcmShutDownCANopen(), kCopSuccessful);
     return TEST_DONE("test_callback_order");

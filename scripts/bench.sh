@@ -141,15 +141,17 @@ FLAT_OFF=$(flat off)
 # ------------------------------------------------------------------ C API
 # libcop.a with bench/capi/cfg (program monitor on) or cfg_nopm (off), the
 # C program compiled for 1, 8, 32 and 64 receive SRDOs.
-capi_build() { # $1 = on | off
-    local cfg=cfg dir=$OUT/bench-capi-$1 n
+capi_build() { # $1 = on | off | two (two instances, program monitor off)
+    local cfg=cfg dir=$OUT/bench-capi-$1 n counts="1 8 32 64" extra=""
     [ "$1" = off ] && cfg=cfg_nopm
+    [ "$1" = two ] && cfg=cfg_two && counts=1 && extra=bench/capi/objdict_other.c
     log "C API build (program monitor $1)"
     COP_CONFIG_DIR=$ROOT/bench/capi/$cfg CARGO_TARGET_DIR=$dir \
         cargo build -q --release --features std --lib >&2 || die "libcop.a (bench/capi/$cfg)"
-    for n in 1 8 32 64; do
+    for n in $counts; do
+        # shellcheck disable=SC2086 # $extra: the second dictionary or nothing
         gcc -O2 -Wall -Wextra -Werror -DBENCH_SRDOS=$n -DCOP_HOST_SIMULATION -Iinclude \
-            -Ibench/capi/$cfg -Ibench/capi bench/capi/capi.c bench/capi/objdict.c \
+            -Ibench/capi/$cfg -Ibench/capi bench/capi/capi.c bench/capi/objdict.c $extra \
             "$dir/release/libcop.a" -lpthread -ldl -lm -o "$WORK/capi-$1-$n" || die "bench/capi ($1, $n)"
     done
 }
@@ -162,6 +164,15 @@ for pm in on off; do
         CRX[$pm,$n]=$(minus "$(per_call "$WORK/capi-$pm-$n" cycle $CYCLES rx)" "${CIDLE[$pm,$n]}")
     done
 done
+# The pair on instance 1 of a two-instance build (program monitor off).
+capi_build two
+log "C API cycles (two instances)"
+CIDLE[two,1]=$(per_call "$WORK/capi-two-1" cycle $CYCLES idle)
+CRX[two,1]=$(minus "$(per_call "$WORK/capi-two-1" cycle $CYCLES rx)" "${CIDLE[two,1]}")
+CTWO_PCT=$(awk -v a="${CRX[off,1]}" -v b="${CRX[two,1]}" 'BEGIN {printf "%+.1f\n", (b - a) * 100 / a}')
+# The program monitor's idle cost per receive SRDO (an AppProgMonEvent per
+# SRDO and CcmProcess), from the idle cycles with 1 and 64 SRDOs.
+CPM_PER_SRDO=$(awk -v a="${CIDLE[on,1]}" -v b="${CIDLE[on,64]}" 'BEGIN {printf "%.0f\n", (b - a) / 63}')
 CHANDSHAKE=$(per_call "$WORK/capi-off-8" handshake $CYCLES handshake)
 CSEND=$(per_call "$WORK/capi-off-8" send $CYCLES send)
 # Where the instructions of a C API figure go: where <binary> <fn> <scenario>
@@ -314,8 +325,10 @@ DIRTY=$(git status --porcelain --untracked-files=no 2>/dev/null | grep -q . && e
         "$CHANDSHAKE" "${CIDLE[off,8]}" "$CSEND"
     printf '"rust_srdo_pair_pm_on": %s, "rust_srdo_pair_pm_off": %s, ' "${RX[on,1]}" "${RX[off,1]}"
     printf '"code_srdo_gfc_crc_arm_z": %s, "code_srdo_gfc_crc_thumb_z": %s, ' "${CODE[arm-z]}" "${CODE[thumb-z]}"
-    printf '"text_safety_node": %s, "text_io_node": %s, "ram_per_srdo_dynamic": %s}\n' \
+    printf '"text_safety_node": %s, "text_io_node": %s, "ram_per_srdo_dynamic": %s, ' \
         "$TEXT_SAFETY" "$TEXT_IO" "$PER_SRDO"
+    printf '"capi_srdo_pair_two_instances": %s, "capi_idle_per_srdo_pm_on": %s}\n' \
+        "${CRX[two,1]}" "$CPM_PER_SRDO"
 } >"$WORK/figures.json"
 if [ $JSON = 1 ]; then
     cat "$WORK/figures.json"
@@ -343,6 +356,8 @@ not times); sizes and RAM are those of the TMS570 build
 | the same, program monitor off | flat | $(fmt "${CRX[off,1]}") / $(fmt "${CRX[off,8]}") / $(fmt "${CRX[off,32]}") / $(fmt "${CRX[off,64]}") ($CFLAT_OFF %) | $(awk -v f="$CFLAT_OFF" 'BEGIN {print (f <= 10 ? "met" : "MISSED")}') |
 | C API: \`CcmGetSrdoState\` + \`CcmSetSrdoState\` | ≤ 40 | $(fmt "$CHANDSHAKE") | $(verdict "$CHANDSHAKE" 40) |
 | C API: idle \`CcmProcess\`, 8 SRDOs, heartbeat producer, SDO server, 4 PDOs (program monitor off) | ≤ 120 | $(fmt "${CIDLE[off,8]}") | $(verdict "${CIDLE[off,8]}" 120) |
+| C API: received SRDO pair on instance 1 of a two-instance build (program monitor off), against one instance | ≤ +10 % | $(fmt "${CRX[two,1]}") ($CTWO_PCT %) | $(awk -v f="$CTWO_PCT" 'BEGIN {print (f <= 10 ? "met" : "MISSED")}') |
+| C API: idle \`CcmProcess\` per receive SRDO, program monitor on (an \`AppProgMonEvent\` each) | ≤ 90 | $(fmt "$CPM_PER_SRDO") | $(verdict "$CPM_PER_SRDO" 90) |
 | C API: \`CcmSendSrdo\`, one transmit SRDO (4 × UNSIGNED8), both \`CdrvWriteMsg\` | ≤ 250 | $(fmt "$CSEND") | $(verdict "$CSEND" 250) |
 | instructions per valid received SRDO pair, 4 mapped bytes (program monitor on / off) | ≤ 300 | $(fmt "${RX[on,1]}") / $(fmt "${RX[off,1]}") | $(verdict "${RX[on,1]}" 300) / $(verdict "${RX[off,1]}" 300) |
 | the same with 1, 8, 32, 64 configured SRDOs (program monitor on) | flat (≤ +10 % from 1 to 64) | $(fmt "${RX[on,1]}") / $(fmt "${RX[on,8]}") / $(fmt "${RX[on,32]}") / $(fmt "${RX[on,64]}") ($FLAT_ON %) | $(awk -v f="$FLAT_ON" 'BEGIN {print (f <= 10 ? "met" : "MISSED")}') |

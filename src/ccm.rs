@@ -640,6 +640,21 @@ impl Stack {
         }
     }
 
+    /// The event at the front of the action queue, if one waits there:
+    /// what [`Stack::poll`] and [`Stack::drain`] would hand out first, with
+    /// no time needed. The C API's pump takes it without reading the clock.
+    #[inline(always)]
+    pub fn queued_event(&mut self) -> Option<Event> {
+        self.queue.pop_event()
+    }
+
+    /// The program monitor event at the front of the action queue, if one
+    /// waits there (a run of them follows a timer pass over the SRDOs).
+    #[inline(always)]
+    pub fn queued_progmon(&mut self) -> Option<crate::event::ProgMonEvent> {
+        self.queue.pop_progmon()
+    }
+
     /// Hands out queued events without starting a cycle (after API calls
     /// such as [`Stack::send_srdo`] or [`Stack::connect`]).
     pub fn drain(&mut self, port: &mut impl CanPort, now: Ticks) -> Option<Event> {
@@ -887,6 +902,7 @@ impl Stack {
             }
             Internal::EnterState(s) => self.enter_state(s, port, now),
             Internal::SrdoCheckHandled(slot) => self.srdo.check_handled(slot, &mut self.queue),
+            Internal::SrdoOk(slot) => self.srdo.deliver_ok(slot, &mut self.queue),
         }
     }
 

@@ -133,6 +133,11 @@ pub enum Internal {
     /// After `AppSrdoError` for an SRDO (table slot): check the status bits
     /// 6-7 the application had to set (manual 2.9.2).
     SrdoCheckHandled(u8),
+    /// A successful transfer of an SRDO (table slot) whose event waits in
+    /// the queue: status bits 4-5 := 00 ("ok") when its turn comes, then
+    /// `Event::SrdoEvent`, so that its callback finds the status of its own
+    /// transfer whatever an earlier callback set meanwhile.
+    SrdoOk(u8),
 }
 
 /// An entry of the action queue.
@@ -185,6 +190,16 @@ impl ActionQueue {
         self.len == 0
     }
 
+    /// The action queued last, if any.
+    pub fn last(&self) -> Option<Action> {
+        if self.len == 0 {
+            return None;
+        }
+        self.buf
+            .get((self.head + self.len - 1) % QUEUE_CAPACITY)
+            .copied()
+    }
+
     /// Appends an action. Returns `false` (and drops nothing already queued)
     /// when the queue is full; callers size their steps so this never
     /// happens, and a test asserts it.
@@ -234,6 +249,22 @@ impl ActionQueue {
         self.head = (self.head + 1) % QUEUE_CAPACITY;
         self.len -= 1;
         a
+    }
+
+    /// Takes the first action when it is a program monitor event.
+    #[inline(always)]
+    pub fn pop_progmon(&mut self) -> Option<ProgMonEvent> {
+        if self.len == 0 {
+            return None;
+        }
+        let Some(Action::Emit(Event::ProgMon(e))) =
+            self.buf.get(self.head % QUEUE_CAPACITY).copied()
+        else {
+            return None;
+        };
+        self.head = (self.head + 1) % QUEUE_CAPACITY;
+        self.len -= 1;
+        Some(e)
     }
 
     /// Takes the first action when it is an event for the application

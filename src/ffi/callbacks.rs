@@ -14,8 +14,8 @@ use core::sync::atomic::{AtomicPtr, Ordering};
 use super::instance::app_call;
 use super::types::{
     tAppEmccEventCallback, tAppHbcEventCallback, tAppNmtmEventCallback, tCcmErrorCallback,
-    tCcmNmtEventCallback, tEmcParam, tPdoCallback, tProgMonCallback, tSdocCbFinishParam,
-    tSdocCbFinished, tSrdoAppCallbacks, tSrdoEventCallback,
+    tCcmNmtEventCallback, tCopKernel, tEmcParam, tPdoCallback, tProgMonCallback,
+    tSdocCbFinishParam, tSdocCbFinished, tSrdoAppCallbacks, tSrdoEventCallback,
 };
 use crate::config::{PDO_MAX_RXPDO_IN_OBD, PDO_MAX_TXPDO_IN_OBD};
 use crate::error::CopKernel;
@@ -73,10 +73,10 @@ impl Pending {
     }
 
     /// Calls the callback as [`dispatch`] does (the SRDO callbacks' return
-    /// values are not evaluated); returns the error to report through the
+    /// values are not evaluated); returns the code to report through the
     /// error callback, if any.
     #[inline(always)]
-    pub(crate) fn call(self, instance: usize) -> Option<CopKernel> {
+    pub(crate) fn call(self, instance: usize) -> Option<tCopKernel> {
         match self {
             Pending::SrdoEvent(Some(cb), idx) => {
                 // SAFETY: AppSrdoEvent of the application (objdef.h).
@@ -106,9 +106,10 @@ impl Pending {
 
 /// Calls the application for one event of instance `instance`. Runs with
 /// the instance released, so the callback may call any `Ccm*` function.
-/// Returns the error to report through the error callback
-/// (`CcmRegisterErrorCallback`), if the event's callback refused.
-pub(crate) fn dispatch(ev: Event, cbs: Callbacks, instance: usize) -> Option<CopKernel> {
+/// Returns the code to report through the error callback
+/// (`CcmRegisterErrorCallback`) when the event's callback refused: the
+/// code the application returned, unchanged.
+pub(crate) fn dispatch(ev: Event, cbs: Callbacks, instance: usize) -> Option<tCopKernel> {
     let srdo = cbs.srdo;
     match ev {
         Event::Nmt(e) => {
@@ -116,7 +117,7 @@ pub(crate) fn dispatch(ev: Event, cbs: Callbacks, instance: usize) -> Option<Cop
                 // SAFETY: the application's NMT callback from tCcmInitParam.
                 let ret = unsafe { app_call!(cb, instance; e as u32) };
                 if ret != 0 {
-                    return Some(CopKernel::NmtStateError);
+                    return Some(ret);
                 }
             }
         }
@@ -233,7 +234,7 @@ pub(crate) fn set_pdo(commu_index: u16, cb: tPdoCallback, instance: usize) {
 type tPdoCallbackFn = <tPdoCallback as OptionFn>::Fn;
 
 /// The function type inside an `Option` of a function pointer.
-trait OptionFn {
+pub(crate) trait OptionFn {
     type Fn;
 }
 impl<F> OptionFn for Option<F> {
@@ -266,7 +267,7 @@ fn pdo(commu_index: u16, instance: usize) {
 
 #[cfg(test)]
 mod tests {
-    use super::super::types::{WORD, tCopKernel};
+    use super::super::types::WORD;
     use super::*;
 
     unsafe extern "C" fn cb(_w: WORD) -> tCopKernel {

@@ -146,6 +146,7 @@ fn init(p: &tCcmInitParam, first: bool) -> CopResult {
         port,
         callbacks: Callbacks {
             nmt: p.m_fpNmtEventCallback,
+            error: global::take_early_error_callback(),
             srdo: srdo_callbacks,
             ..Callbacks::default()
         },
@@ -335,14 +336,19 @@ pub extern "C" fn CcmNmtsExecCommand(
     code(r)
 }
 
-/// `CcmRegisterErrorCallback`.
+/// `CcmRegisterErrorCallback`: the callback that hears of the codes the
+/// application's callbacks return (unchanged: an NMT callback returning
+/// an error at kNmtEvResetCommunication, also inside `CcmInitCANopen`) and
+/// of the library's own reports; NULL removes it. Registered before
+/// `CcmInitCANopen`, it is the callback of the instance that call starts
+/// (the function returns void, so it cannot refuse).
 #[unsafe(no_mangle)]
 pub extern "C" fn CcmRegisterErrorCallback(
     #[cfg(multi_instance)] InstanceHandle: tCopInstanceHdl,
     fpErrorCallback_p: tCcmErrorCallback,
 ) {
     instance::ccm_enter!(InstanceHandle);
-    let _ = global::with(|i| i.callbacks.error = fpErrorCallback_p);
+    global::register_error_callback(fpErrorCallback_p);
 }
 
 /// `CcmConfigHbp`: sets the producer heartbeat time (writes 0x1017).

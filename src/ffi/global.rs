@@ -21,7 +21,9 @@ use core::mem::MaybeUninit;
 use super::callbacks::{self, Callbacks};
 use super::driver::{CdrvPort, TgtClock};
 use super::instance::app_call;
-use super::types::tCopKernel;
+use core::sync::atomic::Ordering;
+
+use super::types::{tCcmErrorCallback, tCopKernel};
 use crate::ccm::Stack;
 use crate::error::{CopKernel, CopResult, to_code};
 use crate::event::Event;
@@ -158,6 +160,7 @@ pub fn select(index: usize) -> bool {
 #[cfg(multi_instance)]
 pub struct Scope {
     previous: usize,
+    entered: usize,
 }
 
 #[cfg(multi_instance)]
@@ -165,18 +168,21 @@ impl Scope {
     /// Addresses instance `handle`; `Err(kCopIllegalInstance)` for a handle
     /// of no slot. Whether the slot holds an instance is decided by
     /// [`with`] (kCopIllegalInstance before `CcmInitCANopen` and after
-    /// `CcmShutDownCANopen`).
+    /// `CcmShutDownCANopen`). Addressing the instance already addressed
+    /// (every call of a one-instance loop, a callback's calls into its own
+    /// instance) writes nothing.
     #[inline(always)]
     pub fn enter(handle: u8) -> Result<Scope, CopKernel> {
-        let h = usize::from(handle);
-        if h >= MAX_INSTANCES {
+        let entered = usize::from(handle);
+        if entered >= MAX_INSTANCES {
             return Err(CopKernel::IllegalInstance);
         }
-        let previous = GLOBAL.current.replace(h);
-        if previous != h {
+        let previous = GLOBAL.current.get();
+        if previous != entered {
             forget_srdo_state();
+            GLOBAL.current.set(entered);
         }
-        Ok(Scope { previous })
+        Ok(Scope { previous, entered })
     }
 }
 
@@ -184,8 +190,9 @@ impl Scope {
 impl Drop for Scope {
     #[inline(always)]
     fn drop(&mut self) {
-        if GLOBAL.current.replace(self.previous) != self.previous {
+        if self.previous != self.entered {
             forget_srdo_state();
+            GLOBAL.current.set(self.previous);
         }
     }
 }
@@ -432,15 +439,56 @@ pub fn with_srdo_event<R>(
     Ok(r)
 }
 
-/// Reports an error to the callback registered with
-/// `CcmRegisterErrorCallback` (if any).
-pub fn report_error(code: CopKernel) {
+/// Reports a code to the callback registered with
+/// `CcmRegisterErrorCallback` (if any): the code an application callback
+/// returned, unchanged, or one of the library's.
+pub fn report_error(code: tCopKernel) {
     let cb = with(|i| i.callbacks.error).ok().flatten();
     if let Some(cb) = cb {
         // SAFETY: the application's error callback; no argument object.
-        unsafe { app_call!(cb, current(); core::ptr::null_mut(), code.code()) };
+        unsafe { app_call!(cb, current(); core::ptr::null_mut(), code) };
     }
 }
+
+/// The error callbacks registered with `CcmRegisterErrorCallback` while a
+/// slot held no instance, one per slot: `CcmInitCANopen` gives the next
+/// instance of the slot the callback, so that it also hears of the
+/// refusals of the start-up events (`CcmRegisterErrorCallback` returns
+/// void and cannot refuse). Function pointers as atomic pointers, as the
+/// PDO callbacks are kept (`callbacks.rs`).
+static EARLY_ERROR_CALLBACKS: [core::sync::atomic::AtomicPtr<core::ffi::c_void>; MAX_INSTANCES] =
+    [const { core::sync::atomic::AtomicPtr::new(core::ptr::null_mut()) }; MAX_INSTANCES];
+
+/// `CcmRegisterErrorCallback` for the addressed slot: the instance's
+/// callback, or, while the slot holds no instance, the one its next
+/// instance starts with.
+pub fn register_error_callback(cb: tCcmErrorCallback) {
+    if with(|i| i.callbacks.error = cb).is_err() {
+        if let Some(early) = EARLY_ERROR_CALLBACKS.get(current()) {
+            early.store(
+                cb.map_or(core::ptr::null_mut(), |f| f as *mut _),
+                Ordering::Relaxed,
+            );
+        }
+    }
+}
+
+/// Takes the callback registered for the addressed slot before its
+/// instance existed ([`register_error_callback`]).
+pub fn take_early_error_callback() -> tCcmErrorCallback {
+    let p = EARLY_ERROR_CALLBACKS
+        .get(current())?
+        .swap(core::ptr::null_mut(), Ordering::Relaxed);
+    if p.is_null() {
+        return None;
+    }
+    // SAFETY: non-NULL entries were stored by `register_error_callback`
+    // from a tCcmErrorCallback function pointer of the application.
+    Some(unsafe { core::mem::transmute::<*mut core::ffi::c_void, ErrorCallbackFn>(p) })
+}
+
+/// The function type of a [`tCcmErrorCallback`].
+type ErrorCallbackFn = <tCcmErrorCallback as super::callbacks::OptionFn>::Fn;
 
 /// Hands out events one at a time: `next` runs inside the stack and yields
 /// the next event; the callback runs outside. Returns `true` when an SRDO
@@ -481,14 +529,27 @@ fn deliver(p: callbacks::Pending) {
 fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Option<Event>) -> bool {
     let mut not_handled = false;
     loop {
-        let now = TgtClock.now();
-        let step = with_inline(|i| next(i, now).map(|e| callbacks::Pending::take(e, &i.callbacks)));
+        // An event already queued (a run of program monitor events, the
+        // events of one frame) needs no time: the clock is read only when
+        // the stack has to work.
+        let step = with_inline(|i| {
+            let p = i
+                .stack
+                .queued_event()
+                .or_else(|| next(i, TgtClock.now()))
+                .map(|e| callbacks::Pending::take(e, &i.callbacks))?;
+            Some((p, ProgMonRun::take(p, &mut i.stack)))
+        });
         match step {
-            Ok(Some(p @ (callbacks::Pending::SrdoEvent(..) | callbacks::Pending::ProgMon(..)))) => {
+            Ok(Some((
+                p @ (callbacks::Pending::SrdoEvent(..) | callbacks::Pending::ProgMon(..)),
+                run,
+            ))) => {
                 // These never report an error (`Pending::call`).
                 let _ = p.call(current());
+                run.deliver(p);
             }
-            Ok(Some(p)) => {
+            Ok(Some((p, _))) => {
                 not_handled |= p.is_not_handled();
                 deliver(p);
             }
@@ -496,6 +557,55 @@ fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Optio
         }
     }
     not_handled
+}
+
+/// The program monitor events queued right behind one (a timer pass over
+/// the SRDOs queues one per SRDO), taken in the same borrow of the
+/// instance and handed to `AppProgMonEvent` one after the other: the
+/// calls, their order and their arguments are those of one event per pump
+/// step, without a return into the stack between them. What a callback
+/// queues meanwhile comes after them, as it would.
+#[derive(Clone, Copy)]
+struct ProgMonRun {
+    events: [u8; PROGMON_RUN],
+    len: u8,
+}
+
+/// The longest [`ProgMonRun`] (the action queue holds at most 16).
+const PROGMON_RUN: usize = crate::event::QUEUE_CAPACITY;
+
+impl ProgMonRun {
+    /// After `first` (a program monitor event): the ones queued behind it.
+    #[inline(always)]
+    fn take(first: callbacks::Pending, stack: &mut Stack) -> ProgMonRun {
+        let mut run = ProgMonRun {
+            events: [0; PROGMON_RUN],
+            len: 0,
+        };
+        if let callbacks::Pending::ProgMon(..) = first {
+            for slot in run.events.iter_mut() {
+                let Some(e) = stack.queued_progmon() else {
+                    break;
+                };
+                *slot = e as u8;
+                run.len += 1;
+            }
+        }
+        run
+    }
+
+    /// Calls the callback of `first` with each event of the run.
+    #[inline(always)]
+    fn deliver(&self, first: callbacks::Pending) {
+        if let callbacks::Pending::ProgMon(Some(cb), _) = first {
+            let instance = current();
+            for &e in self.events.iter().take(usize::from(self.len)) {
+                // SAFETY: AppProgMonEvent of the application (objdef.h),
+                // as `Pending::call` calls it; its result is not evaluated.
+                let _ = unsafe { app_call!(cb, instance; u32::from(e)) };
+            }
+        }
+    }
 }
 
 /// `CopSimSelectInstance`: simulation only (`sim-instances` builds, and so

@@ -498,6 +498,15 @@ pub unsafe extern "C" fn SrdoInit(
 ) -> tCopKernel {
     instance::mco_enter_ptr!(pInstancePtr);
     // SAFETY: the caller's contract (NULL or a valid tSrdoInitParam).
+    unsafe { init_from(pInitParam_p) }
+}
+
+/// `SrdoInit` / `SrdoAddInstance` of the addressed instance.
+///
+/// # Safety
+/// `pInitParam_p` must be NULL or point to a valid `tSrdoInitParam`.
+unsafe fn init_from(pInitParam_p: *const tSrdoInitParam) -> tCopKernel {
+    // SAFETY: the caller's contract (NULL or a valid tSrdoInitParam).
     let p = c_try!(unsafe { ptr::read(pInitParam_p) });
     init(&p)
 }
@@ -525,8 +534,7 @@ pub unsafe extern "C" fn SrdoAddInstance(
 ) -> tCopKernel {
     instance::mco_enter_ptr!(pInstancePtr);
     // SAFETY: the caller's contract (NULL or a valid tSrdoInitParam).
-    let p = c_try!(unsafe { ptr::read(pInitParam_p) });
-    init(&p)
+    unsafe { init_from(pInitParam_p) }
 }
 
 /// `SrdoDeleteInstance`: stops every SRDO (as leaving OPERATIONAL does);

@@ -94,10 +94,15 @@ use core::sync::atomic::AtomicU8;
 use crate::config::SRDO_MAX_MAPPENTRIES;
 use crate::config::{SRDO_ALLOW_GAPS_IN_OD, SRDO_MAX_SRDO_IN_OBD, SRDO_USE_PROGMONITOR};
 use crate::error::{CopKernel, CopResult};
-use crate::event::{Action, ActionQueue, Event, Internal, NmtState, ProgMonEvent};
+use crate::event::{Action, ActionQueue, Event, Internal, NmtState, ProgMonEvent, QUEUE_CAPACITY};
 use crate::od::ObjectDictionary;
 use crate::port::{CanPort, Priority, RxFrame, Ticks, ms_to_ticks};
 use crate::wire::srdo::{self as wire, COB_ID_COUNT, COB_ID_MIN, SrdoCobIds};
+
+/// The most actions one SRDO's timer step queues (an SRVT and an SCT
+/// error, each with its check of the handshake, and the program monitor's
+/// event), with one to spare.
+const STEP_ACTIONS_MAX: usize = 6;
 
 pub use crc::crc16;
 
@@ -672,12 +677,25 @@ impl Srdo {
         q: &mut ActionQueue,
         direct: bool,
     ) -> Option<Event> {
-        let e = self.mark_ok(slot)?;
-        if !direct {
-            q.emit(e);
-        }
+        let e = if direct {
+            self.mark_ok(slot)
+        } else {
+            // The status is set when the event's turn comes
+            // (`Internal::SrdoOk`): an earlier event's callback may mark
+            // the SRDO processed meanwhile (manual 2.9.1).
+            q.schedule(Internal::SrdoOk(slot as u8));
+            None
+        };
         Self::progmon(q, pm);
-        direct.then_some(e)
+        e
+    }
+
+    /// `Internal::SrdoOk`: the success event of `slot` whose turn has come,
+    /// with the status of its transfer ("ok"), put in front of the queue.
+    pub fn deliver_ok(&mut self, slot: u8, q: &mut ActionQueue) {
+        if let Some(e) = self.mark_ok(usize::from(slot)) {
+            q.push_front(Action::Emit(e));
+        }
     }
 
     /// Status bits 4-5 := 00 (success); the event to report.
@@ -955,8 +973,14 @@ impl Srdo {
             let slot = usize::from(self.cursor);
             self.cursor += 1;
             let before = q.len();
-            self.timer_step(slot, now, q, srvt_before_1st);
-            if q.len() != before {
+            let quiet = self.timer_step(slot, now, q, srvt_before_1st);
+            // A step that only reported its check to the program monitor
+            // does not end the pass while the queue has room for the worst
+            // step: the application gets the same events in the same
+            // order, without a return to the cycle per SRDO. A step with
+            // an error ends it, so that its callback runs before the next
+            // SRDO is looked at.
+            if q.len() != before && !(quiet && q.len() + STEP_ACTIONS_MAX <= QUEUE_CAPACITY) {
                 let done = self.cursor >= self.count;
                 if done && !SRDO_USE_PROGMONITOR {
                     self.plan_timers(now);
@@ -988,28 +1012,39 @@ impl Srdo {
         self.holding_seen = holding;
     }
 
-    fn timer_step(&mut self, slot: usize, now: Ticks, q: &mut ActionQueue, srvt_before_1st: bool) {
+    /// One SRDO's part of the timer pass: SRVT and SCT checks of a
+    /// receive SRDO, the refresh of a transmit one, the program monitor's
+    /// event. `true` when it reported nothing but that event (no error).
+    fn timer_step(
+        &mut self,
+        slot: usize,
+        now: Ticks,
+        q: &mut ActionQueue,
+        srvt_before_1st: bool,
+    ) -> bool {
         let Some(s) = self.slots.get_mut(slot) else {
-            return;
+            return true;
         };
         if s.flags & flag::ACTIVE == 0 {
             Self::progmon(q, ProgMonEvent::SctNotCheckedItIsInvalid);
-            return;
+            return true;
         }
         if s.direction == Direction::Transmit as u8 {
             // The refresh time only feeds the program monitor.
+            let mut quiet = true;
             if SRDO_USE_PROGMONITOR {
                 Self::progmon(q, ProgMonEvent::SctNotCheckedItIsTx);
                 if s.flags & flag::ARMED != 0 && now.is_after(s.deadline) {
                     s.flags &= !flag::ARMED;
                     Self::progmon(q, ProgMonEvent::SrdoError);
+                    quiet = false;
                 }
             }
             // Every pass steps the transmit SRDOs, and a pass comes at
             // least every 2^30 ticks: the first-send delay is settled long
             // before `tx_from` could be compared beyond 2^31 ticks.
             self.first_send_delay_over(now);
-            return;
+            return quiet;
         }
         // A first frame held longer than any SRVT is dated back to
         // HELD_LIMIT at each pass, so that its age, counted modulo 2^32,
@@ -1025,7 +1060,7 @@ impl Srdo {
         let watch_srvt = srvt_before_1st && s.flags & flag::HOLDING != 0;
         if !(deadline_over || watch_srvt) {
             Self::progmon(q, ProgMonEvent::SctChecked);
-            return;
+            return true;
         }
         let holding = s.flags & flag::HOLDING != 0;
         let held_for = now.since(s.held_at);
@@ -1048,6 +1083,7 @@ impl Srdo {
             self.report_error(slot, CopKernel::SrdoSctTimeout, q);
         }
         Self::progmon(q, ProgMonEvent::SctChecked);
+        !(srvt_error || sct_error)
     }
 
     // ----------------------------------------------------------- transmission
