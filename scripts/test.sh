@@ -29,6 +29,8 @@ run_stage() {
         python3 -m unittest discover -q -s scripts/evidence -p 'test_*.py'
         cargo clippy --all-targets -- -D warnings
         cargo clippy --lib --no-default-features -- -D warnings
+        # The multi-instance form of the C edge (COP_MAX_INSTANCES 2).
+        COP_MAX_INSTANCES=2 CARGO_TARGET_DIR=target/multi cargo clippy --lib --features std -- -D warnings
         CARGO_TARGET_DIR=target/embedded-can cargo clippy --all-targets --features embedded-can -- -D warnings
         cargo clippy --lib --features srdo-static-mapping,srdo-granularity-16,pdo-bit-mapping,pdo-granularity-64 -- -D warnings
         CARGO_TARGET_DIR=target/dcf2bin cargo fmt --manifest-path tools/dcf2bin/Cargo.toml -- --check
