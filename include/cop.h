@@ -160,7 +160,12 @@ BYTE CcmLsssGetNodeId(CCM_DECL_INSTANCE_HDL);
 tCopKernel CcmNmtsExecCommand(CCM_DECL_INSTANCE_HDL_ tNmtCommand NmtCommand_p);
 
 /**
- * `CcmRegisterErrorCallback`.
+ * `CcmRegisterErrorCallback`: the callback that hears of the codes the
+ * application's callbacks return (unchanged: an NMT callback returning
+ * an error at kNmtEvResetCommunication, also inside `CcmInitCANopen`) and
+ * of the library's own reports; NULL removes it. Registered before
+ * `CcmInitCANopen`, it is the callback of the instance that call starts
+ * (the function returns void, so it cannot refuse).
  */
 void CcmRegisterErrorCallback(CCM_DECL_INSTANCE_HDL_ tCcmErrorCallback fpErrorCallback_p);
 
