@@ -420,6 +420,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg_attr(miri, ignore = "writes files; Miri runs isolated from the file system")]
     fn capture_holds_what_reached_the_bus_with_bus_time() {
         let dir = std::env::temp_dir();
         let pcap = dir.join(format!("cop_sim_capture_{}.pcap", std::process::id()));
