@@ -25,15 +25,15 @@ scripts/setup.sh --demo
 
 say "configure and build (CMake -> build/; the library is built by cargo per example configuration)"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Debug >/dev/null
-cmake --build build -j2 --target io_node safety_demo
+cmake --build build -j2 --target io_node safety_demo two_channel
 
-say "demo 1 of 2: I/O node (examples_c/io_node, target run_io_node)
+say "demo 1 of 3: I/O node (examples_c/io_node, target run_io_node)
      A master sends NMT start and the three SDO requests of seed 004
      (write 8 outputs, read 8 inputs, read an analog input); every frame on
      the bus is printed in candump format, then the node's answers are checked."
 cmake --build build --target run_io_node
 
-say "demo 2 of 2: safety network (examples_c/safety_demo, target run_safety_demo)
+say "demo 2 of 3: safety network (examples_c/safety_demo, target run_safety_demo)
      Sensor (node 1) -> SRDO 1 (COB-IDs 0x101/0x102, normal and inverted
      data) -> actuator (node 2) with a safe output. Watch for: the SRDO
      configuration in the NMT callback (CRC into 0x13FF, 0xA5 into 0x13FE),
@@ -43,7 +43,17 @@ say "demo 2 of 2: safety network (examples_c/safety_demo, target run_safety_demo
 COP_SIM_PCAP="$PWD/build/safety_demo.pcap" COP_SIM_CANDUMP="$PWD/build/safety_demo.log" \
     cmake --build build --target run_safety_demo
 
-say "done: both demos ran (build/examples_c/io_node/io_node, build/examples_c/safety_demo/safety_demo)
+say "demo 3 of 3: two channels (examples_c/two_channel, target run_two_channel)
+     Four stack instances in one program (COP_MAX_INSTANCES 4): a sensor and an
+     actuator with two CAN controllers each, channel A on can0, channel B on
+     can1. The actuator cross-checks the channels. Watch for: a silent
+     controller found by channel B's SCT, a corrupted frame on channel A
+     (kCopSrdoDataError), and the channels disagreeing; each time the safe
+     state, and RESET bringing the output back."
+cmake --build build --target run_two_channel
+
+say "done: the three demos ran (build/examples_c/io_node/io_node, build/examples_c/safety_demo/safety_demo,
+     build/examples_c/two_channel/two_channel)
      The safety demo's traffic: build/safety_demo.pcap (Wireshark, tshark) and
      build/safety_demo.log (candump -l, canplayer). With the SRDO dissector:
        tshark -2 -X lua_script:tools/wireshark/cop_srdo.lua -o cop_srdo.srvt_ms:10 -r build/safety_demo.pcap"
