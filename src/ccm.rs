@@ -648,6 +648,13 @@ impl Stack {
         self.queue.pop_event()
     }
 
+    /// Whether a program monitor event waits at the front of the action
+    /// queue ([`Stack::queued_progmon`] would take it).
+    #[inline(always)]
+    pub fn progmon_queued(&self) -> bool {
+        self.queue.front_is_progmon()
+    }
+
     /// The program monitor event at the front of the action queue, if one
     /// waits there (a run of them follows a timer pass over the SRDOs).
     #[inline(always)]

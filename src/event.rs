@@ -190,16 +190,6 @@ impl ActionQueue {
         self.len == 0
     }
 
-    /// The action queued last, if any.
-    pub fn last(&self) -> Option<Action> {
-        if self.len == 0 {
-            return None;
-        }
-        self.buf
-            .get((self.head + self.len - 1) % QUEUE_CAPACITY)
-            .copied()
-    }
-
     /// Appends an action. Returns `false` (and drops nothing already queued)
     /// when the queue is full; callers size their steps so this never
     /// happens, and a test asserts it.
@@ -249,6 +239,16 @@ impl ActionQueue {
         self.head = (self.head + 1) % QUEUE_CAPACITY;
         self.len -= 1;
         a
+    }
+
+    /// Whether the first action is a program monitor event.
+    #[inline(always)]
+    pub fn front_is_progmon(&self) -> bool {
+        self.len != 0
+            && matches!(
+                self.buf.get(self.head % QUEUE_CAPACITY),
+                Some(Action::Emit(Event::ProgMon(_)))
+            )
     }
 
     /// Takes the first action when it is a program monitor event.

@@ -258,11 +258,13 @@ impl CanPort for CdrvPort {
             & (cdrv_status::OVERRUN
                 | cdrv_status::RX_BUFF_HIGH_OVERRUN
                 | cdrv_status::RX_BUFF_LOW_OVERRUN);
-        if lost != 0 {
+        let (safety, other) = if lost == 0 {
+            (false, false)
+        } else {
             // SAFETY: plain call; clears the bits we consumed.
             unsafe { cdrv!(self, CdrvResetStatus(lost)) };
-        }
-        let (safety, other) = split_overrun(lost);
+            split_overrun(lost)
+        };
         PortStatus {
             rx_overrun: safety,
             rx_overrun_other: other,

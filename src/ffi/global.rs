@@ -55,6 +55,9 @@ struct Global {
     current: Cell<usize>,
     busy: Cell<bool>,
     pumping: Cell<bool>,
+    /// The program monitor event the pump handed out last has more queued
+    /// right behind it ([`ProgMonRun`]).
+    progmon_run: Cell<bool>,
 }
 
 /// The SRDO status bytes of the current instance while nothing is inside
@@ -95,6 +98,7 @@ static GLOBAL: Global = Global {
     current: Cell::new(0),
     busy: Cell::new(false),
     pumping: Cell::new(false),
+    progmon_run: Cell::new(false),
 };
 
 /// Makes the fast path of [`srdo_status`] fall back (the instance is about
@@ -537,19 +541,25 @@ fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Optio
                 .stack
                 .queued_event()
                 .or_else(|| next(i, TgtClock.now()))
-                .map(|e| callbacks::Pending::take(e, &i.callbacks))?;
-            Some((p, ProgMonRun::take(p, &mut i.stack)))
+                .map(|e| callbacks::Pending::take(e, &i.callbacks));
+            if let Some(callbacks::Pending::ProgMon(..)) = p {
+                GLOBAL.progmon_run.set(i.stack.progmon_queued());
+            }
+            p
         });
         match step {
-            Ok(Some((
-                p @ (callbacks::Pending::SrdoEvent(..) | callbacks::Pending::ProgMon(..)),
-                run,
-            ))) => {
-                // These never report an error (`Pending::call`).
+            Ok(Some(p @ callbacks::Pending::SrdoEvent(..))) => {
+                // Never reports an error (`Pending::call`).
                 let _ = p.call(current());
-                run.deliver(p);
             }
-            Ok(Some((p, _))) => {
+            Ok(Some(p @ callbacks::Pending::ProgMon(..))) => {
+                // Never reports an error (`Pending::call`).
+                let _ = p.call(current());
+                if GLOBAL.progmon_run.get() {
+                    ProgMonRun::deliver_queued(p);
+                }
+            }
+            Ok(Some(p)) => {
                 not_handled |= p.is_not_handled();
                 deliver(p);
             }
@@ -575,35 +585,32 @@ struct ProgMonRun {
 const PROGMON_RUN: usize = crate::event::QUEUE_CAPACITY;
 
 impl ProgMonRun {
-    /// After `first` (a program monitor event): the ones queued behind it.
-    #[inline(always)]
-    fn take(first: callbacks::Pending, stack: &mut Stack) -> ProgMonRun {
+    /// After `first` (a program monitor event the pump handed out): takes
+    /// the ones queued behind it in one borrow and calls the callback with
+    /// each. Out of line, so that the pump's other steps carry nothing of it.
+    #[inline(never)]
+    fn deliver_queued(first: callbacks::Pending) {
+        let callbacks::Pending::ProgMon(Some(cb), _) = first else {
+            return;
+        };
         let mut run = ProgMonRun {
             events: [0; PROGMON_RUN],
             len: 0,
         };
-        if let callbacks::Pending::ProgMon(..) = first {
+        let _ = with_inline(|i| {
             for slot in run.events.iter_mut() {
-                let Some(e) = stack.queued_progmon() else {
+                let Some(e) = i.stack.queued_progmon() else {
                     break;
                 };
                 *slot = e as u8;
                 run.len += 1;
             }
-        }
-        run
-    }
-
-    /// Calls the callback of `first` with each event of the run.
-    #[inline(always)]
-    fn deliver(&self, first: callbacks::Pending) {
-        if let callbacks::Pending::ProgMon(Some(cb), _) = first {
-            let instance = current();
-            for &e in self.events.iter().take(usize::from(self.len)) {
-                // SAFETY: AppProgMonEvent of the application (objdef.h),
-                // as `Pending::call` calls it; its result is not evaluated.
-                let _ = unsafe { app_call!(cb, instance; u32::from(e)) };
-            }
+        });
+        let instance = current();
+        for &e in run.events.iter().take(usize::from(run.len)) {
+            // SAFETY: AppProgMonEvent of the application (objdef.h), as
+            // `Pending::call` calls it; its result is not evaluated.
+            let _ = unsafe { app_call!(cb, instance; u32::from(e)) };
         }
     }
 }

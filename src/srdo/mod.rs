@@ -980,13 +980,14 @@ impl Srdo {
             // order, without a return to the cycle per SRDO. A step with
             // an error ends it, so that its callback runs before the next
             // SRDO is looked at.
-            if q.len() != before && !(quiet && q.len() + STEP_ACTIONS_MAX <= QUEUE_CAPACITY) {
-                let done = self.cursor >= self.count;
-                if done && !SRDO_USE_PROGMONITOR {
-                    self.plan_timers(now);
-                }
-                return done;
+            if (quiet && q.len() <= QUEUE_CAPACITY - STEP_ACTIONS_MAX) || q.len() == before {
+                continue;
             }
+            let done = self.cursor >= self.count;
+            if done && !SRDO_USE_PROGMONITOR {
+                self.plan_timers(now);
+            }
+            return done;
         }
         if !SRDO_USE_PROGMONITOR {
             self.plan_timers(now);
