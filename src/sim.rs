@@ -183,6 +183,7 @@ impl Bus {
         let slot = bits + physical::INTERMISSION_BITS;
         p.in_flight = Some(BusFrame {
             from,
+            queued_ns: pending.queued_ns,
             start_ns: start,
             end_ns: start + p.model.bits_ns(bits),
             bits: slot,

@@ -174,6 +174,8 @@ pub fn frame_bits(f: &CanFrame) -> u32 {
 pub struct BusFrame {
     /// The sending node (`usize::MAX`: injected from outside).
     pub from: usize,
+    /// When the sender queued it, ns of bus time.
+    pub queued_ns: u64,
     /// The start of frame, ns of bus time.
     pub start_ns: u64,
     /// The end of the end of frame field, ns of bus time.
