@@ -201,9 +201,6 @@ impl Bus {
         };
         let time = p.ticks_at(f.end_ns);
         let model = p.model;
-        if let Some(log) = p.log.as_mut() {
-            log.push(f);
-        }
         let mut frame = f.frame;
         let delivery = match self.filter.as_mut() {
             Some(filter) => filter(f.from, &mut frame),
@@ -227,6 +224,11 @@ impl Bus {
                     self.capture = None;
                     break;
                 }
+            }
+        }
+        if let Some(log) = self.phys.as_mut().and_then(|p| p.log.as_mut()) {
+            for _ in 0..copies {
+                log.push(BusFrame { frame, ..f });
             }
         }
         let (mut lost_high, mut lost_low) = (0, 0);
@@ -386,7 +388,8 @@ impl SimBus {
     }
 
     /// The frames that went over a physical bus since the last call (with
-    /// [`SimBus::keep_bus_log`] on).
+    /// [`SimBus::keep_bus_log`] on), as the receivers got them: after the
+    /// fault filter (a dropped frame is missing, a duplicated one twice).
     pub fn take_bus_log(&self) -> Vec<BusFrame> {
         self.0
             .borrow_mut()

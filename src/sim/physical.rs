@@ -182,7 +182,7 @@ pub struct BusFrame {
     pub end_ns: u64,
     /// Bits on the bus including stuff bits and the intermission.
     pub bits: u32,
-    /// The frame (as it was sent, before a fault filter).
+    /// The frame (in the bus log: as the fault filter delivered it).
     pub frame: CanFrame,
 }
 
