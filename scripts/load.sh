@@ -62,6 +62,10 @@ for mode in driver cycle; do
     } >>"$md"
 done
 unset CARGO_TARGET_DIR
+if ! python3 -c 'import matplotlib' 2>/dev/null; then
+    echo "the plot needs matplotlib (scripts/setup.sh --evidence installs it); tables written" >&2
+    exit 1
+fi
 python3 scripts/load/plot.py "$work/driver.csv" "$work/cycle.csv" docs/load.png
 echo "written: $md docs/load.png"
 exit $status
