@@ -57,6 +57,10 @@ run_stage() {
         # stage prints its table. Long run: --cycles 10000000 with --release.
         stage "SRDO fault-injection campaign (10^5 cycles, fixed seed)"
         cargo run -q --example fault_injection -- --cycles 100000 --seed 0x5EED0304
+        # Smoke run of the load campaign (scripts/load.sh; the long run is
+        # `scripts/load.sh`, 10 simulated minutes).
+        stage "Load campaign on the physical bus model (3 simulated seconds)"
+        scripts/load.sh --quick
         ;;
     header)
         stage "scripts/header.sh --verify (include/cop.h is up to date)"

@@ -282,6 +282,58 @@ fn receive_overrun_is_reported_before_the_frames() {
     assert_eq!(net.c.seen_in_error, vec![(CopKernel::SrdoOverrun, 0x50)]);
 }
 
+/// On the physical bus with the buffers of a SYS TEC driver configuration
+/// (high 16, low 10): 17 SDO frames overflow the consumer's low buffer
+/// while the SRDO pair behind them waits in the high one, where the
+/// consumer subscribed its COB-IDs. A CAN overrun, not an SRDO error.
+#[test]
+fn physical_bus_low_buffer_overrun_is_no_srdo_alarm() {
+    let bus = cop::sim::SimBus::with_bit_rate(1_000_000).unwrap();
+    let mut net = Net::preoperational_on(bus, 0);
+    net.start();
+    net.wait_ms(2);
+    net.p.cycle();
+    net.c.cycle();
+    net.bus.clear_trace();
+    for i in 0..17 {
+        net.inject(0x605, &[0x40, 0x00, 0x10, 0x00, 0, 0, 0, i]);
+    }
+    net.inject(0x101, &[1, 0, 2, 0]);
+    net.inject(0x102, &[0xFE, 0xFF, 0xFD, 0xFF]);
+    net.wait_ms(5);
+    let ev = no_pm(&net.c.cycle());
+    assert_eq!(srdo_only(&ev), vec![Event::SrdoEvent(IDX)]);
+    assert_eq!(net.consumer_values(), [1, 2, 0xFFFE, 0xFFFD]);
+    // Each node (the producer hears them too) kept 10 of the 17.
+    assert_eq!(net.bus.stats().unwrap().rx_lost_low, 2 * 7);
+    assert_eq!(net.bus.stats().unwrap().rx_lost_high, 0);
+}
+
+/// The same with 17 frames on the SRDO's COB-ID 1: the high buffer
+/// overflows and the consumer reports the overrun as an SRDO error.
+#[test]
+fn physical_bus_high_buffer_overrun_is_an_srdo_overrun() {
+    let bus = cop::sim::SimBus::with_bit_rate(1_000_000).unwrap();
+    let mut net = Net::preoperational_on(bus, 0);
+    net.start();
+    net.wait_ms(2);
+    net.p.cycle();
+    net.c.cycle();
+    for _ in 0..17 {
+        net.inject(0x101, &[1, 0, 2, 0]);
+    }
+    net.wait_ms(5);
+    let ev = no_pm(&net.c.cycle());
+    assert_eq!(
+        ev.first(),
+        Some(&Event::SrdoError(IDX, CopKernel::SrdoOverrun))
+    );
+    // Each node kept 16 of the 17 (the producer subscribes its SRDO's
+    // COB-IDs in the high buffer as well).
+    assert_eq!(net.bus.stats().unwrap().rx_lost_high, 2);
+    assert_eq!(net.bus.stats().unwrap().rx_lost_low, 0);
+}
+
 // req: M-2.9.2-APPERROR, M-2.5.3-STATUS
 #[test]
 fn error_not_handled_by_the_application() {

@@ -321,8 +321,13 @@ impl Net {
     /// 0xA5), not yet OPERATIONAL. `capacity` is the consumer's receive
     /// queue length.
     pub fn preoperational_with(capacity: usize) -> Net {
+        Self::preoperational_on(SimBus::new(), capacity)
+    }
+
+    /// [`Net::preoperational_with`] on `bus` (a physical bus gives every
+    /// node its model's buffers instead of `capacity`).
+    pub fn preoperational_on(bus: SimBus, capacity: usize) -> Net {
         let guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
-        let bus = SimBus::new();
         let mut p = Node::new(&bus, producer::od(), 1, 64);
         let mut c = Node::new(&bus, consumer::od(), 2, capacity);
         for n in [&mut p, &mut c] {
