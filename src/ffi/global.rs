@@ -17,12 +17,11 @@
 
 use core::cell::{Cell, UnsafeCell};
 use core::mem::MaybeUninit;
+use core::sync::atomic::Ordering;
 
 use super::callbacks::{self, Callbacks};
 use super::driver::{CdrvPort, TgtClock};
 use super::instance::app_call;
-use core::sync::atomic::Ordering;
-
 use super::types::{tCcmErrorCallback, tCopKernel};
 use crate::ccm::Stack;
 use crate::error::{CopKernel, CopResult, to_code};
@@ -56,7 +55,7 @@ struct Global {
     busy: Cell<bool>,
     pumping: Cell<bool>,
     /// The program monitor event the pump handed out last has more queued
-    /// right behind it ([`ProgMonRun`]).
+    /// right behind it ([`deliver_progmon_run`]).
     progmon_run: Cell<bool>,
 }
 
@@ -556,7 +555,7 @@ fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Optio
                 // Never reports an error (`Pending::call`).
                 let _ = p.call(current());
                 if GLOBAL.progmon_run.get() {
-                    ProgMonRun::deliver_queued(p);
+                    deliver_progmon_run(p);
                 }
             }
             Ok(Some(p)) => {
@@ -569,49 +568,36 @@ fn pump_events(next: &mut impl FnMut(&mut Instance, crate::port::Ticks) -> Optio
     not_handled
 }
 
-/// The program monitor events queued right behind one (a timer pass over
-/// the SRDOs queues one per SRDO), taken in the same borrow of the
-/// instance and handed to `AppProgMonEvent` one after the other: the
-/// calls, their order and their arguments are those of one event per pump
-/// step, without a return into the stack between them. What a callback
-/// queues meanwhile comes after them, as it would.
-#[derive(Clone, Copy)]
-struct ProgMonRun {
-    events: [u8; PROGMON_RUN],
-    len: u8,
-}
-
-/// The longest [`ProgMonRun`] (the action queue holds at most 16).
-const PROGMON_RUN: usize = crate::event::QUEUE_CAPACITY;
-
-impl ProgMonRun {
-    /// After `first` (a program monitor event the pump handed out): takes
-    /// the ones queued behind it in one borrow and calls the callback with
-    /// each. Out of line, so that the pump's other steps carry nothing of it.
-    #[inline(never)]
-    fn deliver_queued(first: callbacks::Pending) {
-        let callbacks::Pending::ProgMon(Some(cb), _) = first else {
-            return;
-        };
-        let mut run = ProgMonRun {
-            events: [0; PROGMON_RUN],
-            len: 0,
-        };
-        let _ = with_inline(|i| {
-            for slot in run.events.iter_mut() {
-                let Some(e) = i.stack.queued_progmon() else {
-                    break;
-                };
-                *slot = e as u8;
-                run.len += 1;
-            }
-        });
-        let instance = current();
-        for &e in run.events.iter().take(usize::from(run.len)) {
-            // SAFETY: AppProgMonEvent of the application (objdef.h), as
-            // `Pending::call` calls it; its result is not evaluated.
-            let _ = unsafe { app_call!(cb, instance; u32::from(e)) };
+/// After `first` (a program monitor event the pump handed out): the ones
+/// queued right behind it (a timer pass over the SRDOs queues one per
+/// SRDO), taken in one borrow of the instance and handed to
+/// `AppProgMonEvent` one after the other. The calls, their order and their
+/// arguments are those of one event per pump step, without a return into
+/// the stack between them; what a callback queues meanwhile comes after
+/// them, as it would. Out of line, so that the pump's other steps carry
+/// nothing of it.
+#[inline(never)]
+fn deliver_progmon_run(first: callbacks::Pending) {
+    let callbacks::Pending::ProgMon(Some(cb), _) = first else {
+        return;
+    };
+    // The action queue holds at most QUEUE_CAPACITY events.
+    let mut events = [0u8; crate::event::QUEUE_CAPACITY];
+    let mut len = 0;
+    let _ = with_inline(|i| {
+        for slot in events.iter_mut() {
+            let Some(e) = i.stack.queued_progmon() else {
+                break;
+            };
+            *slot = e as u8;
+            len += 1;
         }
+    });
+    let instance = current();
+    for &e in events.iter().take(len) {
+        // SAFETY: AppProgMonEvent of the application (objdef.h), as
+        // `Pending::call` calls it; its result is not evaluated.
+        let _ = unsafe { app_call!(cb, instance; u32::from(e)) };
     }
 }
 
