@@ -33,8 +33,8 @@ use crate::nmt::slave::{self, Transition};
 use crate::nmt::{LifeGuardSlave, NmtMaster, error_behaviour, lifeguard};
 use crate::od::{ByteOrder, Object, ObjectDictionary, Staged, WriteHooks};
 use crate::pdo::Pdo;
-use crate::port::{CanId, CanPort, Priority, RxFrame, Ticks};
-use crate::sdo::{SdoClient, SdoServers};
+use crate::port::{CanFrame, CanId, CanPort, Priority, RxFrame, Ticks};
+use crate::sdo::{SdoClient, SdoServer, SdoServers};
 use crate::srdo::{Received, Srdo};
 use crate::store::{self, StoreRestore};
 use crate::sync::{self, SyncProducer};
@@ -707,8 +707,11 @@ impl Stack {
     #[inline(never)] // its frame stays out of poll_work (worst-case stack, docs/tms570.md)
     fn timers(&mut self, port: &mut impl CanPort, now: Ticks) {
         for s in self.sdo.channels_mut() {
+            if let Some(f) = s.take_held() {
+                send_server_frame(s, port, f);
+            }
             if let Some(f) = s.poll(&self.od, now) {
-                let _ = port.send(&f, Priority::Low);
+                send_server_frame(s, port, f);
             }
         }
         self.send_sdo_segments(port, now);
@@ -829,7 +832,10 @@ impl Stack {
             let reply = server.on_frame(&self.od, &mut hooks, f, now);
             let changed = hooks.sdo_changed;
             if let Some(r) = reply {
-                let _ = port.send(&r, Priority::Low);
+                if let Some(older) = server.take_held() {
+                    send_server_frame(server, port, older);
+                }
+                send_server_frame(server, port, r);
             }
             self.send_sdo_segments(port, now);
             if changed {
@@ -1131,3 +1137,12 @@ impl Stack {
 
 #[cfg(test)]
 mod tests;
+
+/// Sends a frame of SDO server `s`. One the driver refuses (a full
+/// transmit buffer), or one that would overtake a frame still waiting, is
+/// kept and goes in the next cycle ([`SdoServer::hold`]).
+fn send_server_frame(s: &mut SdoServer, port: &mut impl CanPort, f: CanFrame) {
+    if s.holding() || port.send(&f, Priority::Low).is_err() {
+        s.hold(f);
+    }
+}

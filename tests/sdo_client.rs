@@ -86,6 +86,42 @@ fn segmented_string_both_ways() {
     assert_eq!(&decl::get(&RX_BUF)[..39], text);
 }
 
+/// A transmit buffer full for a moment (the driver refuses a frame) delays
+/// a transfer, it does not end it: the server and the client keep the
+/// refused frame and send it in their next cycle, once, in order.
+#[test]
+fn refused_frames_are_sent_in_the_next_cycle() {
+    let _g = serial();
+    let mut net = Net::new();
+    let text = b"held back by a full transmit buffer....";
+    let mut src = [0u8; 40];
+    src[..39].copy_from_slice(text);
+    decl::set(&TX_BUF, src);
+    net.start(Direction::Download, 0x2001, &TX_BUF, 39).unwrap();
+    // The server's answer to the initiate request (the server is node 0 of
+    // the bus), then the client's first segment.
+    net.bus.refuse_tx(0, 1);
+    net.run(2);
+    net.bus.refuse_tx(1, 1);
+    net.run(20);
+    assert_eq!(net.state(), (SdocState::Finished, 0));
+    assert_eq!(&decl::get(&TEXT)[..39], text);
+    // Initiate and answer, six segments and six answers (CiA 301
+    // segmented download of 39 bytes): nothing lost, nothing twice.
+    assert_eq!(net.bus.trace().len(), 2 + 2 * 6);
+    net.bus.clear_trace();
+    decl::set(&RX_BUF, [0; 40]);
+    net.start(Direction::Upload, 0x2001, &RX_BUF, 40).unwrap();
+    net.bus.refuse_tx(0, 1);
+    net.run(4);
+    net.bus.refuse_tx(0, 1);
+    net.bus.refuse_tx(1, 1);
+    net.run(20);
+    assert_eq!(net.state(), (SdocState::Finished, 0));
+    assert_eq!(&decl::get(&RX_BUF)[..39], text);
+    assert_eq!(net.bus.trace().len(), 2 + 2 * 6);
+}
+
 #[test]
 fn server_abort_is_reported_with_its_code() {
     let _g = serial();

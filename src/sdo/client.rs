@@ -141,6 +141,9 @@ struct Transfer {
     last_segment: [u8; SEGMENT_MAX],
     /// Time of the last frame received.
     last_rx: Ticks,
+    /// A request the driver refused (a full transmit buffer), sent again
+    /// by [`SdoClient::poll`] before anything else of the transfer.
+    held: Option<CanFrame>,
 }
 
 #[derive(Clone, Copy, Debug, Default)]
@@ -349,6 +352,7 @@ impl SdoClient {
             crc_acc: 0,
             last_segment: [0; SEGMENT_MAX],
             last_rx: now,
+            held: None,
         };
         let frame = match dir {
             Direction::Upload => ClientFrame::InitiateUpload { mux },
@@ -474,10 +478,17 @@ impl SdoClient {
     pub fn poll(&mut self, port: &mut impl CanPort, now: Ticks, q: &mut ActionQueue) -> bool {
         for (n, ch) in self.channels.iter_mut().enumerate() {
             let index = CLIENT_BASE_INDEX + n as u16;
-            if let Some(t) = ch.transfer {
+            if let Some(mut t) = ch.transfer {
                 if now.is_after(t.deadline) {
                     finish_tx_abort(ch, port, index, t.mux, SdoAbort::Timeout.code(), q);
                     return false;
+                }
+                if let Some(f) = t.held {
+                    if port.send(&f, Priority::Low).is_err() {
+                        continue;
+                    }
+                    t.held = None;
+                    ch.transfer = Some(t);
                 }
             }
             send_block_segments(ch, port, now);
@@ -543,11 +554,14 @@ fn apply(
     };
     match step {
         Step::Send(f) => {
-            if port.send(&f.to_can(tx), Priority::Low).is_err() {
-                finish_tx_abort(ch, port, index, t.mux, SdoAbort::General.code(), q);
-            } else {
-                ch.transfer = Some(t);
+            let f = f.to_can(tx);
+            let mut t = t;
+            // A full transmit buffer delays the request to the next cycle;
+            // the transfer's timeout still runs.
+            if t.held.is_some() || port.send(&f, Priority::Low).is_err() {
+                t.held = Some(f);
             }
+            ch.transfer = Some(t);
         }
         Step::Wait => {
             ch.transfer = Some(t);
@@ -581,6 +595,9 @@ fn send_block_segments(ch: &mut Channel, port: &mut impl CanPort, now: Ticks) {
     let Phase::BlockDown(mut btx) = t.phase else {
         return;
     };
+    if t.held.is_some() {
+        return;
+    }
     while let Some(p) = btx.next() {
         let mut tmp = [0u8; SEGMENT_MAX];
         let chunk = tmp

@@ -246,6 +246,9 @@ pub struct SdoServer {
     tx: Option<CanId>,
     timeout_ticks: u32,
     transfer: Transfer,
+    /// A frame the driver refused (a full transmit buffer), sent again
+    /// before anything else of this channel.
+    held: Option<CanFrame>,
     buf: [u8; SDOS_BUFFER_SIZE],
 }
 
@@ -267,6 +270,7 @@ impl SdoServer {
             tx: None,
             timeout_ticks: SDOS_DEFAULT_TIMEOUT,
             transfer: Transfer::Idle,
+            held: None,
             buf: [0; SDOS_BUFFER_SIZE],
         }
     }
@@ -285,6 +289,7 @@ impl SdoServer {
         };
         if (rx, tx) != (self.rx, self.tx) {
             self.transfer = Transfer::Idle;
+            self.held = None;
         }
         self.rx = rx;
         self.tx = tx;
@@ -381,7 +386,26 @@ impl SdoServer {
     /// [`SdoServer::pending_segment`] have nothing to do.
     #[inline]
     pub fn at_rest(&self) -> bool {
-        matches!(self.transfer, Transfer::Idle)
+        matches!(self.transfer, Transfer::Idle) && self.held.is_none()
+    }
+
+    /// Keeps `f`, which the driver refused, for [`SdoServer::take_held`]:
+    /// a full transmit buffer delays the answer to the next cycle instead
+    /// of losing it (and the client's transfer with it). One frame: a
+    /// client waits for each answer; a newer one (an abort) replaces it.
+    pub fn hold(&mut self, f: CanFrame) {
+        self.held = Some(f);
+    }
+
+    /// The frame [`SdoServer::hold`] kept, to be sent before anything else
+    /// of this channel.
+    pub fn take_held(&mut self) -> Option<CanFrame> {
+        self.held.take()
+    }
+
+    /// True while a refused frame waits: the channel sends nothing else.
+    pub fn holding(&self) -> bool {
+        self.held.is_some()
     }
 
     /// Timeout supervision; returns the abort frame (0x05040000) when the
@@ -404,6 +428,9 @@ impl SdoServer {
         let Transfer::BlockUp(u) = self.transfer else {
             return None;
         };
+        if self.held.is_some() {
+            return None;
+        }
         if u.phase != BlockUpPhase::SubBlock {
             return None;
         }
@@ -433,6 +460,7 @@ impl SdoServer {
     /// Drops a running transfer without answering (NMT stopped or reset).
     pub fn cancel(&mut self) {
         self.transfer = Transfer::Idle;
+        self.held = None;
     }
 
     fn expired(&self, now: Ticks) -> bool {
