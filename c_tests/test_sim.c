@@ -233,6 +233,177 @@ static void DirectDriver (void)
     CHECK_EQ(SimInject(0x080, 0, 1, abOne), 1);         /* node 1 only */
 }
 
+static void InitDriverTx (BYTE bNode_p, tCdrvBuffIndex RxLow_p, tCdrvBuffIndex TxLow_p)
+{
+    tCdrvInitParam Param;
+
+    memset(&Param, 0, sizeof(Param));
+    Param.m_RxBuffHigh.m_MaxEntries = 16;
+    Param.m_RxBuffLow.m_MaxEntries = RxLow_p;
+    Param.m_TxBuffHigh.m_MaxEntries = 16;
+    Param.m_TxBuffLow.m_MaxEntries = TxLow_p;
+    CHECK_RET(SimSelectNode(bNode_p), kCopSuccessful);
+    CHECK_RET(CdrvInit(&Param), kCopSuccessful);
+}
+
+static void SendData (BYTE bNode_p, WORD wId_p, BYTE bDlc_p, CONST BYTE* pbData_p, int fHigh_p, tCopKernel Expected_p)
+{
+    tCdrvMsg Msg;
+
+    memset(&Msg, 0, sizeof(Msg));
+    Msg.m_CanId = wId_p;
+    Msg.m_MsgType = (tMsgTyp) (fHigh_p ? kMtbHighPrio : 0);
+    Msg.m_bSize = bDlc_p;
+    memcpy(Msg.m_bData, pbData_p, bDlc_p);
+    CHECK_RET(SimSelectNode(bNode_p), kCopSuccessful);
+    CHECK_RET(CdrvWriteMsg(&Msg), Expected_p);
+}
+
+static unsigned FrameBits (DWORD dwId_p, BYTE bDlc_p, CONST BYTE* pbData_p)
+{
+    tSimFrame Frame;
+
+    memset(&Frame, 0, sizeof(Frame));
+    Frame.m_dwId = dwId_p;
+    Frame.m_bDlc = bDlc_p;
+    memcpy(Frame.m_abData, pbData_p, bDlc_p);
+    return SimFrameBits(&Frame);
+}
+
+/* The physical model (SimSetBitRate): frame lengths, arbitration, bit
+ * time, end-of-frame timestamps, bounded transmit and receive buffers. The
+ * lengths are the ones worked out by hand from ISO 11898-1:2015 10.4.2 and
+ * 10.5 in src/sim/physical.rs (known_frames_have_their_length); the times
+ * are the ones src/sim.rs asserts for the same frames on the Rust model
+ * (physical_bus_sends_the_lowest_identifier_first,
+ * physical_capture_has_the_end_of_frame_times), so both models agree. */
+static void PhysicalBus (void)
+{
+    static CONST BYTE abPdo[8] = { 0x11, 0x22, 0x33, 0x44, 0x55, 0x66, 0x77, 0x88 };
+    static CONST BYTE abHb[1] = { 0x05 };
+    static CONST BYTE abNmt[2] = { 0x01, 0x00 };
+    static CONST BYTE abZero[8] = { 0 };
+    tSimFrame Frame;
+    tSimBusStats Stats;
+    char szLine[64];
+    unsigned i;
+
+    /* 0x705 [05]: 56 bits, 4 stuff bits; NMT [01 00]: 65; 0x181 with eight
+     * bytes: 112; identifier 0, no data: 34 dominant bits, 6 stuff: 50. */
+    CHECK_EQ(FrameBits(0x705, 1, abHb), 56);
+    CHECK_EQ(FrameBits(0x000, 2, abNmt), 65);
+    CHECK_EQ(FrameBits(0x181, 8, abPdo), 112);
+    CHECK_EQ(FrameBits(0x000, 0, abZero), 50);
+    /* Worst-case bound of stuffing (Davis, Burns, Bril, Lukkien 2007): 8
+     * bytes of zeros, base and extended format, within 44 + 64 + 24 and
+     * 64 + 64 + 29 bits. */
+    CHECK(FrameBits(0x000, 8, abZero) <= 44 + 64 + 24);
+    CHECK(FrameBits(0x000 | CAN_FRAME_FORMAT_MASK, 8, abZero) <= 64 + 64 + 29);
+    CHECK(FrameBits(0x000 | CAN_FRAME_FORMAT_MASK, 8, abZero) > FrameBits(0x000, 8, abZero));
+    CHECK_EQ(SimFrameBits(NULL), 0);
+
+    SimReset();
+    CHECK_RET(SimSetBitRate(0, 9999), kCopInvalidParam);
+    CHECK_RET(SimSetBitRate(0, 1000001), kCopInvalidParam);
+    CHECK_RET(SimSetBitRate(SIM_MAX_BUSES, 125000), kCopInvalidParam);
+    CHECK_RET(SimSetBitRate(0, 1000000), kCopSuccessful);
+    for (i = 0; i < 4; i++)
+    {
+        InitDriverTx((BYTE) i, 10, 10);
+    }
+    Define(0x000, 0);
+    Define(0x181, 0);
+    Define(0x705, 0);
+    /* Queued in node order; the lowest identifier goes first. */
+    SendData(0, 0x181, 8, abPdo, 0, kCopSuccessful);
+    SendData(1, 0x705, 1, abHb, 0, kCopSuccessful);
+    SendData(2, 0x000, 2, abNmt, 1, kCopSuccessful);
+    CHECK_EQ(SimTxPending(0), 1);
+    CHECK_EQ(SimRxPending(3), 0);
+    SimAdvanceMs(1);
+    CHECK_EQ(SimTxPending(0), 0);
+    CHECK_EQ(SimRxPending(3), 3);
+    /* Ends at 65, 180 and 239 us: ticks 0, 1, 2 and the microseconds. */
+    CHECK(SimTakeSentFrame(&Frame));
+    CHECK_EQ(Frame.m_dwId, 0x000);
+    CHECK_EQ(Frame.m_dwTick, 0);
+    CHECK_EQ(Frame.m_wSubTickUs, 65);
+    CHECK(SimTakeSentFrame(&Frame));
+    CHECK_EQ(Frame.m_dwId, 0x181);
+    CHECK_EQ(Frame.m_bSender, 0);
+    CHECK_EQ(Frame.m_dwTick, 1);
+    CHECK_EQ(Frame.m_wSubTickUs, 80);
+    CHECK(SimTakeSentFrame(&Frame));
+    CHECK_EQ(Frame.m_dwId, 0x705);
+    CHECK_EQ(Frame.m_dwTick, 2);
+    CHECK_EQ(Frame.m_wSubTickUs, 39);
+    CHECK(SimFormatCandump(&Frame, szLine, sizeof(szLine)) > 0);
+    CHECK(strcmp(szLine, "  can0  705   [1]  05") == 0);
+    CHECK_EQ(SimTakeSentFrame(&Frame), 0);
+    CHECK_RET(SimSelectNode(3), kCopSuccessful);
+    Receive(kCopCdrvMsgLow, 0x000, 0x01);
+    Receive(kCopCdrvMsgLow, 0x181, 0x11);
+    Receive(kCopCdrvMsgLow, 0x705, 0x05);
+    SimGetBusStats(0, &Stats);
+    CHECK_EQ(Stats.m_ullFrames, 3);
+    CHECK_EQ(Stats.m_ullBits, 65 + 112 + 56 + 3 * 3);
+    CHECK_EQ(Stats.m_ullBusyNs, (65 + 112 + 56 + 3 * 3) * 1000ULL);
+    CHECK_EQ(Stats.m_ullElapsedNs, 1000000ULL);
+
+    /* The transmit buffer of its capacity; a full one refuses. The high
+     * buffer goes first, whatever the identifiers. */
+    SimReset();
+    CHECK_RET(SimSetBitRate(0, 125000), kCopSuccessful);
+    InitDriverTx(0, 10, 2);
+    InitDriverTx(1, 10, 10);
+    Define(0x080, 0);
+    Define(0x102, 0);
+    Define(0x705, 0);
+    SendData(0, 0x080, 1, abHb, 0, kCopSuccessful);
+    SendData(0, 0x080, 1, abHb, 0, kCopSuccessful);
+    SendData(0, 0x080, 1, abHb, 0, kCopCdrvTxBuffLowOverrun);
+    SendData(0, 0x102, 1, abHb, 1, kCopSuccessful);
+    SimGetBusStats(0, &Stats);
+    CHECK_EQ(Stats.m_ullTxRefused, 1);
+    SimAdvanceMs(5);
+    CHECK_RET(SimSelectNode(1), kCopSuccessful);
+    Receive(kCopCdrvMsgLow, 0x102, 0x05);
+    Receive(kCopCdrvMsgLow, 0x080, 0x05);
+    Receive(kCopCdrvMsgLow, 0x080, 0x05);
+    Receive(kCopCdrvNoMsg, 0, 0);
+    /* At 125 kbit/s the 56 bits of a heartbeat take 448 us: still on the
+     * bus after 4 ticks, there after 5. Injected frames arrive the same way. */
+    CHECK_EQ(SimInject(0x705, 0, 1, abHb), 0);
+    SimAdvanceTicks(4);
+    CHECK_EQ(SimRxPending(1), 0);
+    SimAdvanceTicks(1);
+    CHECK_EQ(SimRxPending(1), 1);
+    Receive(kCopCdrvMsgLow, 0x705, 0x05);
+
+    /* Eleven frames for a low receive buffer of ten: one lost, the low
+     * overrun bit. */
+    SimReset();
+    CHECK_RET(SimSetBitRate(0, 1000000), kCopSuccessful);
+    InitDriverTx(0, 10, 16);
+    InitDriverTx(1, 10, 16);
+    Define(0x581, 0);
+    for (i = 0; i < 11; i++)
+    {
+        SendData(0, 0x581, 1, abHb, 1, kCopSuccessful);
+    }
+    SimAdvanceMs(2);
+    SimGetBusStats(0, &Stats);
+    CHECK_EQ(Stats.m_ullRxLostLow, 1);
+    CHECK_EQ(Stats.m_ullRxLostHigh, 0);
+    CHECK_EQ(SimGetStatus(1), kCdrvRxBuffLowOverrun);
+    /* Back to the ideal bus: at once again. */
+    CHECK_RET(SimSetBitRate(0, 0), kCopSuccessful);
+    CHECK_RET(SimSelectNode(1), kCopSuccessful);
+    CHECK_RET(CdrvReset(kResetRxBuffer | kResetCanCtrl), kCopSuccessful);
+    SendData(0, 0x581, 1, abHb, 0, kCopSuccessful);
+    CHECK_EQ(SimRxPending(1), 1);
+}
+
 /* The stack subscribes what it needs, and nothing arrives otherwise. */
 static void ThroughTheStack (void)
 {
@@ -259,6 +430,7 @@ static void ThroughTheStack (void)
 int main (void)
 {
     DirectDriver();
+    PhysicalBus();
     ThroughTheStack();
     return TEST_DONE("test_sim");
 }

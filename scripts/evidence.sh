@@ -21,7 +21,8 @@
 #   scripts/evidence.sh unsafe-reach     which unsafe blocks each Rust test binary
 #                                        reaches (docs/evidence/unsafe_reach.md); fails
 #                                        when the default set of scripts/miri.sh misses one
-#   scripts/evidence.sh report           docs/evidence/report.md with its figures
+#   scripts/evidence.sh report           docs/evidence/report.md with its figures (runs the
+#                                        fault-injection and load campaigns)
 #   scripts/evidence.sh all              trace, coverage, mutants, report (long)
 #
 # Not part of scripts/test.sh except `trace-check` (lint stage). Results go to
@@ -247,6 +248,8 @@ cmd_report() {
         --pairs "$WORK/pairs.csv" >"$WORK/timing.txt"
     CARGO_TARGET_DIR=target/srdo_plot cargo run -q -j2 --release --manifest-path tools/srdo_plot/Cargo.toml -- \
         "$WORK/pairs.csv" "$OUT/timing.svg"
+    log "report: load campaign (scripts/load.sh: docs/load.md, docs/load.png)"
+    scripts/load.sh >"$WORK/load.txt"
     {
         rustc --version; rustc +nightly --version
         cargo llvm-cov --version; cargo mutants --version

@@ -19,8 +19,10 @@
 //! included) at the bus's bit rate, waits in its node's high or low
 //! transmit buffer until it wins arbitration (lowest identifier), and
 //! arrives at the end of its end of frame field, which is its receive
-//! timestamp, in a bounded high buffer (identifiers subscribed with
-//! [`Priority::High`]) or low buffer. A loss in the high buffer is
+//! timestamp. A node receives only the identifiers it subscribed (the
+//! driver's identifier filter, `CdrvDefineCanId`), those subscribed with
+//! [`Priority::High`] in a bounded high buffer, the others in a bounded
+//! low buffer. A loss in the high buffer is
 //! reported as `PortStatus::rx_overrun`, in the low buffer as
 //! `PortStatus::rx_overrun_other`.
 
@@ -200,6 +202,7 @@ impl Bus {
             return;
         };
         let time = p.ticks_at(f.end_ns);
+        let origin_ns = p.origin_ns;
         let model = p.model;
         let mut frame = f.frame;
         let delivery = match self.filter.as_mut() {
@@ -219,7 +222,8 @@ impl Bus {
         };
         if let Some(c) = self.capture.as_mut() {
             for _ in 0..copies {
-                if let Err(e) = c.record(time, &frame) {
+                let sub_us = f.end_ns.saturating_sub(origin_ns) % NS_PER_TICK / 1000;
+                if let Err(e) = c.record(time, sub_us, &frame) {
                     eprintln!("sim: capture stopped: {e}");
                     self.capture = None;
                     break;
@@ -236,10 +240,12 @@ impl Bus {
             if i == f.from {
                 continue;
             }
-            let high = n.q.high_ids.contains(&frame.id);
+            let Some(&prio) = n.q.ids.get(&frame.id) else {
+                continue;
+            };
             for _ in 0..copies {
                 let rx = RxFrame { frame, time };
-                if high {
+                if prio == Priority::High {
                     if n.q.rx_high.len() >= model.rx_high {
                         n.overrun = true;
                         lost_high += 1;
@@ -561,7 +567,7 @@ impl SimBus {
         };
         if let Some(c) = b.capture.as_mut() {
             for _ in 0..copies {
-                if let Err(e) = c.record(now, &frame) {
+                if let Err(e) = c.record(now, 0, &frame) {
                     eprintln!("sim: capture stopped: {e}");
                     b.capture = None;
                     break;
@@ -671,19 +677,17 @@ impl CanPort for SimPort {
 
     fn subscribe(&mut self, id: CanId, prio: Priority) -> CopResult {
         // The ideal bus delivers everything to one queue; a physical bus
-        // receives the identifiers subscribed with High in its high buffer.
+        // receives only subscribed identifiers, each in the buffer of its
+        // priority.
         if let Some(n) = self.bus.0.borrow_mut().nodes.get_mut(self.node) {
-            n.q.high_ids.retain(|&h| h != id);
-            if prio == Priority::High {
-                n.q.high_ids.push(id);
-            }
+            n.q.ids.insert(id, prio);
         }
         Ok(())
     }
 
     fn unsubscribe(&mut self, id: CanId) -> CopResult {
         if let Some(n) = self.bus.0.borrow_mut().nodes.get_mut(self.node) {
-            n.q.high_ids.retain(|&h| h != id);
+            n.q.ids.remove(&id);
         }
         Ok(())
     }
@@ -810,6 +814,10 @@ mod tests {
         let bus = SimBus::with_bit_rate(125_000).unwrap();
         let mut a = bus.attach(8);
         let mut b = bus.attach(8);
+        for p in [&mut a, &mut b] {
+            p.subscribe(CanId::std_masked(0x705), Priority::Low)
+                .unwrap();
+        }
         a.send(&frame(0x705, &[0x05]), Priority::Low).unwrap();
         assert_eq!(a.tx_pending(), 1);
         bus.advance_ticks(4);
@@ -830,6 +838,10 @@ mod tests {
         let bus = SimBus::with_bit_rate(1_000_000).unwrap();
         bus.keep_bus_log(true);
         let mut n: Vec<SimPort> = (0..4).map(|_| bus.attach(8)).collect();
+        for id in [0x000, 0x181, 0x705] {
+            n[3].subscribe(CanId::std_masked(id), Priority::Low)
+                .unwrap();
+        }
         let data = [0x11, 0x22, 0x33, 0x44, 0x55, 0x66, 0x77, 0x88];
         n[0].send(&frame(0x181, &data), Priority::Low).unwrap();
         n[1].send(&frame(0x705, &[0x05]), Priority::Low).unwrap();
@@ -856,12 +868,42 @@ mod tests {
     }
 
     #[test]
+    fn physical_capture_has_the_end_of_frame_times() {
+        // The frames of physical_bus_sends_the_lowest_identifier_first:
+        // ends at 65, 180 and 239 µs. examples_c/sim (c_tests/test_sim.c,
+        // PhysicalBus) writes the same lines for the same frames.
+        let dir = std::env::temp_dir();
+        let log = dir.join(format!("cop_sim_phys_{}.log", std::process::id()));
+        let bus = SimBus::with_bit_rate(1_000_000).unwrap();
+        bus.capture(None, Some(&log)).unwrap();
+        let mut n: Vec<SimPort> = (0..3).map(|_| bus.attach(8)).collect();
+        let data = [0x11, 0x22, 0x33, 0x44, 0x55, 0x66, 0x77, 0x88];
+        n[0].send(&frame(0x181, &data), Priority::Low).unwrap();
+        n[1].send(&frame(0x705, &[0x05]), Priority::Low).unwrap();
+        n[2].send(&frame(0x000, &[0x01, 0x00]), Priority::High)
+            .unwrap();
+        bus.advance_ms(1);
+        bus.flush_capture().unwrap();
+        let text = std::fs::read_to_string(&log).unwrap();
+        assert_eq!(
+            text,
+            "(1700000000.000065) can0 000#0100\n\
+             (1700000000.000180) can0 181#1122334455667788\n\
+             (1700000000.000239) can0 705#05\n"
+        );
+        let _ = std::fs::remove_file(log);
+    }
+
+    #[test]
     fn physical_node_empties_its_high_buffer_first() {
         // With CDRV_USE_HIGHBUFF the driver offers its high buffer before
         // the low one, whatever the identifiers.
         let bus = SimBus::with_bit_rate(500_000).unwrap();
         let mut a = bus.attach(8);
         let mut b = bus.attach(8);
+        for id in [0x080, 0x102] {
+            b.subscribe(CanId::std_masked(id), Priority::Low).unwrap();
+        }
         a.send(&frame(0x080, &[1]), Priority::Low).unwrap();
         a.send(&frame(0x102, &[2]), Priority::High).unwrap();
         bus.advance_ms(1);
@@ -902,6 +944,8 @@ mod tests {
         let mut b = bus.attach(8);
         b.subscribe(CanId::std_masked(0x101), Priority::High)
             .unwrap();
+        b.subscribe(CanId::std_masked(0x581), Priority::Low)
+            .unwrap();
         // One frame more than the low buffer's 10.
         for i in 0..11u8 {
             a.send(&frame(0x581, &[i]), Priority::Low).unwrap();
@@ -923,6 +967,39 @@ mod tests {
         // The high buffer is read first.
         assert_eq!(b.receive().unwrap().frame.id.id(), 0x101);
         assert_eq!(b.status(), PortStatus::default());
+    }
+
+    #[test]
+    fn physical_node_receives_only_its_identifiers() {
+        // The driver's identifier filter (CdrvDefineCanId): other nodes'
+        // SRDOs never fill a node's buffers, an unsubscribed identifier
+        // stops arriving, a new subscription moves an identifier between
+        // the buffers.
+        let bus = SimBus::with_bit_rate(1_000_000).unwrap();
+        let mut a = bus.attach(8);
+        let mut b = bus.attach(8);
+        b.subscribe(CanId::std_masked(0x101), Priority::Low)
+            .unwrap();
+        // 16 fit the transmit buffer.
+        for _ in 0..20 {
+            let _ = a.send(&frame(0x103, &[0; 8]), Priority::High);
+        }
+        a.send(&frame(0x101, &[1]), Priority::Low).unwrap();
+        bus.advance_ms(5);
+        assert_eq!(b.pending(), 1);
+        assert_eq!(b.status(), PortStatus::default(), "nothing lost");
+        b.subscribe(CanId::std_masked(0x101), Priority::High)
+            .unwrap();
+        for _ in 0..11 {
+            a.send(&frame(0x101, &[2]), Priority::High).unwrap();
+        }
+        bus.advance_ms(5);
+        assert_eq!(b.pending(), 12, "11 more in the high buffer of 16");
+        b.unsubscribe(CanId::std_masked(0x101)).unwrap();
+        a.send(&frame(0x101, &[3]), Priority::Low).unwrap();
+        bus.advance_ms(1);
+        assert_eq!(b.pending(), 12);
+        assert_eq!(bus.stats().unwrap().frames, 16 + 1 + 11 + 1);
     }
 
     #[test]

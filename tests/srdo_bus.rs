@@ -283,9 +283,9 @@ fn receive_overrun_is_reported_before_the_frames() {
 }
 
 /// On the physical bus with the buffers of a SYS TEC driver configuration
-/// (high 16, low 10): 17 SDO frames overflow the consumer's low buffer
-/// while the SRDO pair behind them waits in the high one, where the
-/// consumer subscribed its COB-IDs. A CAN overrun, not an SRDO error.
+/// (high 16, low 10): 17 SDO requests to the consumer (node 2) overflow its
+/// low buffer while the SRDO pair behind them waits in the high one, where
+/// the consumer subscribed its COB-IDs. A CAN overrun, not an SRDO error.
 #[test]
 fn physical_bus_low_buffer_overrun_is_no_srdo_alarm() {
     let bus = cop::sim::SimBus::with_bit_rate(1_000_000).unwrap();
@@ -296,7 +296,7 @@ fn physical_bus_low_buffer_overrun_is_no_srdo_alarm() {
     net.c.cycle();
     net.bus.clear_trace();
     for i in 0..17 {
-        net.inject(0x605, &[0x40, 0x00, 0x10, 0x00, 0, 0, 0, i]);
+        net.inject(0x602, &[0x40, 0x00, 0x10, 0x00, 0, 0, 0, i]);
     }
     net.inject(0x101, &[1, 0, 2, 0]);
     net.inject(0x102, &[0xFE, 0xFF, 0xFD, 0xFF]);
@@ -304,8 +304,9 @@ fn physical_bus_low_buffer_overrun_is_no_srdo_alarm() {
     let ev = no_pm(&net.c.cycle());
     assert_eq!(srdo_only(&ev), vec![Event::SrdoEvent(IDX)]);
     assert_eq!(net.consumer_values(), [1, 2, 0xFFFE, 0xFFFD]);
-    // Each node (the producer hears them too) kept 10 of the 17.
-    assert_eq!(net.bus.stats().unwrap().rx_lost_low, 2 * 7);
+    // The consumer kept 10 of the 17; the producer's identifier filter
+    // let none of them in.
+    assert_eq!(net.bus.stats().unwrap().rx_lost_low, 7);
     assert_eq!(net.bus.stats().unwrap().rx_lost_high, 0);
 }
 

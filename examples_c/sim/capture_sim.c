@@ -154,7 +154,7 @@ void SimCaptureFrame (CONST tSimFrame* pFrame_p)
         fHaveLast_g = 1;
     }
     dwLastTick_g = pFrame_p->m_dwTick;
-    ullMicros = ullElapsedTicks_g * 100ULL;
+    ullMicros = ullElapsedTicks_g * 100ULL + pFrame_p->m_wSubTickUs;
     dwSec = CAPTURE_EPOCH_S + (unsigned long) (ullMicros / 1000000ULL);
     dwUsec = (unsigned long) (ullMicros % 1000000ULL);
     bLen = (pFrame_p->m_bDlc > 8) ? 8 : pFrame_p->m_bDlc;

@@ -18,6 +18,13 @@
 #define SIM_FILTER_LOW  1u
 #define SIM_FILTER_HIGH 2u
 
+#define SIM_NS_PER_TICK       100000ULL  /* one tick of TgtGetTickCount: 100 us */
+#define SIM_INTERMISSION_BITS 3u         /* ISO 11898-1:2015 10.4.5 */
+#define SIM_TAIL_BITS         10u        /* CRC delimiter, ACK slot and delimiter, EOF: never stuffed */
+#define SIM_CRC15_POLY        0x4599u    /* x^15 + x^14 + x^10 + x^8 + x^7 + x^4 + x^3 + 1 */
+#define SIM_BIT_RATE_MIN      10000UL
+#define SIM_BIT_RATE_MAX      1000000UL
+
 /* A ring of received frames. The stack reads the oldest entry through a
  * pointer (CdrvReadMsg) and frees it (CdrvReleaseMsg). */
 typedef struct
@@ -34,6 +41,17 @@ typedef struct
     BYTE  m_bPrio;      /* SIM_FILTER_* */
 } tSimExtFilter;
 
+/* A transmit buffer of the physical model: frames with the bus time they
+ * were queued at, oldest first. */
+typedef struct
+{
+    tSimFrame          m_aFrame[SIM_QUEUE_MAX];
+    unsigned long long m_aullQueuedNs[SIM_QUEUE_MAX];
+    unsigned           m_uCapacity;
+    unsigned           m_uHead;
+    unsigned           m_uCount;
+} tSimTxQueue;
+
 typedef struct
 {
     int           m_fUsed;                  /* between CdrvInit and CdrvDeleteInstance */
@@ -45,7 +63,22 @@ typedef struct
     unsigned      m_uRefuseTx;
     BYTE          m_bBus;                   /* the bus (CAN line) of its controller */
     int           m_fSilent;                /* sends nothing (SimSilence) */
+    tSimTxQueue   m_TxHigh;                 /* physical bus only */
+    tSimTxQueue   m_TxLow;
 } tSimNode;
+
+/* The physical model of one bus. */
+typedef struct
+{
+    DWORD              m_dwBitRate;         /* 0: the ideal bus */
+    unsigned long long m_ullIdleFromNs;     /* no SOF before (end of the last frame + intermission) */
+    int                m_fInFlight;
+    tSimFrame          m_InFlight;
+    unsigned long long m_ullEndNs;          /* end of frame of m_InFlight */
+    unsigned           m_uInFlightBits;     /* with the intermission */
+    tSimTxQueue        m_Outside;           /* frames of SimInject */
+    tSimBusStats       m_Stats;
+} tSimPhysBus;
 
 static tSimNode  aSimNode_g[SIM_MAX_NODES];
 static BYTE      bSimSelected_g;
@@ -61,6 +94,8 @@ static DWORD     dwSimCorruptId_g;
 static BYTE      bSimCorruptXor_g;
 static BYTE      abSimBusOfNode_g[SIM_MAX_NODES];   /* kept across CdrvInit */
 static BYTE      bSimInjectBus_g;
+static tSimPhysBus aSimPhys_g[SIM_MAX_BUSES];
+static unsigned long long ullSimNs_g;                /* bus time since SimReset */
 
 static DWORD SimIdOfMsg (CONST tCdrvMsg* pMsg_p)
 {
@@ -232,6 +267,10 @@ static int SimDeliver (CONST tSimFrame* pFrame_p)
             else
             {
                 pNode->m_Status |= kCdrvRxBuffHighOverrun;
+                if (pFrame_p->m_bBus < SIM_MAX_BUSES)
+                {
+                    aSimPhys_g[pFrame_p->m_bBus].m_Stats.m_ullRxLostHigh++;
+                }
             }
         }
         else
@@ -243,16 +282,24 @@ static int SimDeliver (CONST tSimFrame* pFrame_p)
             else
             {
                 pNode->m_Status |= kCdrvRxBuffLowOverrun;
+                if (pFrame_p->m_bBus < SIM_MAX_BUSES)
+                {
+                    aSimPhys_g[pFrame_p->m_bBus].m_Stats.m_ullRxLostLow++;
+                }
             }
         }
     }
     return iReceivers;
 }
 
-/* Puts a frame on the bus (unless a fault hook drops it). */
+/* Puts a frame on the bus (unless a fault hook drops it), at the time its
+ * m_dwTick / m_wSubTickUs say. */
 static int SimBus (tSimFrame* pFrame_p)
 {
-    pFrame_p->m_dwTick = dwSimTicks_g;
+    if (pFrame_p->m_bBus < SIM_MAX_BUSES)
+    {
+        aSimPhys_g[pFrame_p->m_bBus].m_Stats.m_ullFrames++;
+    }
     if (fSimDropArmed_g && (pFrame_p->m_dwId == dwSimDropId_g))
     {
         fSimDropArmed_g = 0;
@@ -282,8 +329,343 @@ static int SimBus (tSimFrame* pFrame_p)
 }
 
 /* ========================================================================== */
+/* Physical model (SimSetBitRate)                                             */
+/* ========================================================================== */
+
+static unsigned SimPushBits (BYTE* pbBits_p, unsigned uAt_p, DWORD dwValue_p, unsigned uCount_p)
+{
+    while (uCount_p > 0)
+    {
+        uCount_p--;
+        pbBits_p[uAt_p++] = (BYTE) ((dwValue_p >> uCount_p) & 1UL);
+    }
+    return uAt_p;
+}
+
+/* The CRC-15 of ISO 11898-1:2015 10.4.2.6 over uCount_p bits. */
+static WORD SimCrc15 (CONST BYTE* pbBits_p, unsigned uCount_p)
+{
+    WORD wReg = 0;
+    unsigned i;
+
+    for (i = 0; i < uCount_p; i++)
+    {
+        BYTE bTop = (BYTE) ((wReg >> 14) & 1u);
+
+        wReg = (WORD) ((wReg << 1) & 0x7FFFu);
+        if (pbBits_p[i] != bTop)
+        {
+            wReg ^= SIM_CRC15_POLY;
+        }
+    }
+    return wReg;
+}
+
+unsigned SimFrameBits (CONST tSimFrame* pFrame_p)
+{
+    /* SOF .. CRC sequence of the longest frame: 1 + 32 + 6 + 64 + 15 bits. */
+    BYTE abBits[128];
+    unsigned n = 0;
+    unsigned i;
+    unsigned uStuffed = 0;
+    unsigned uRun = 0;
+    BYTE bLast = 2;
+    DWORD dwId;
+    BYTE bDlc;
+
+    if (pFrame_p == NULL)
+    {
+        return 0;
+    }
+    bDlc = (BYTE) (pFrame_p->m_bDlc & 0x0Fu);
+    dwId = pFrame_p->m_dwId & 0x1FFFFFFFUL;
+    abBits[n++] = 0;                                            /* SOF */
+    if (SimIsExtended(pFrame_p->m_dwId))
+    {
+        n = SimPushBits(abBits, n, dwId >> 18, 11);
+        abBits[n++] = 1;                                        /* SRR */
+        abBits[n++] = 1;                                        /* IDE: extended */
+        n = SimPushBits(abBits, n, dwId & 0x3FFFFUL, 18);
+        abBits[n++] = (BYTE) (pFrame_p->m_bRtr ? 1 : 0);
+        abBits[n++] = 0;                                        /* r1 */
+        abBits[n++] = 0;                                        /* r0 */
+    }
+    else
+    {
+        n = SimPushBits(abBits, n, dwId & 0x7FFUL, 11);
+        abBits[n++] = (BYTE) (pFrame_p->m_bRtr ? 1 : 0);
+        abBits[n++] = 0;                                        /* IDE: base */
+        abBits[n++] = 0;                                        /* r0 */
+    }
+    n = SimPushBits(abBits, n, bDlc, 4);
+    if (!pFrame_p->m_bRtr)
+    {
+        for (i = 0; (i < bDlc) && (i < 8); i++)
+        {
+            n = SimPushBits(abBits, n, pFrame_p->m_abData[i], 8);
+        }
+    }
+    n = SimPushBits(abBits, n, SimCrc15(abBits, n), 15);
+    /* ISO 11898-1:2015 10.5: after five equal bits one of the opposite
+     * value, which starts the next run. */
+    for (i = 0; i < n; i++)
+    {
+        if (abBits[i] == bLast)
+        {
+            uRun++;
+        }
+        else
+        {
+            bLast = abBits[i];
+            uRun = 1;
+        }
+        if (uRun == 5)
+        {
+            uStuffed++;
+            bLast = (BYTE) !bLast;
+            uRun = 1;
+        }
+    }
+    return n + uStuffed + SIM_TAIL_BITS;
+}
+
+/* The arbitration field as a number in which a lower value wins (a
+ * dominant bit is 0): base identifier, SRR/RTR, IDE, extension, RTR. */
+static DWORD SimArbitrationKey (CONST tSimFrame* pFrame_p)
+{
+    DWORD dwId = pFrame_p->m_dwId & 0x1FFFFFFFUL;
+    DWORD dwRtr = pFrame_p->m_bRtr ? 1UL : 0UL;
+
+    if (SimIsExtended(pFrame_p->m_dwId))
+    {
+        return ((dwId >> 18) << 21) | (3UL << 19) | ((dwId & 0x3FFFFUL) << 1) | dwRtr;
+    }
+    return ((dwId & 0x7FFUL) << 21) | (dwRtr << 20);
+}
+
+static unsigned long long SimBitsNs (CONST tSimPhysBus* pBus_p, unsigned uBits_p)
+{
+    unsigned long long ullRate = pBus_p->m_dwBitRate;
+
+    return ((unsigned long long) uBits_p * 1000000000ULL + ullRate - 1ULL) / ullRate;
+}
+
+static void SimTxInit (tSimTxQueue* pQueue_p, tCdrvBuffIndex MaxEntries_p)
+{
+    memset(pQueue_p, 0, sizeof(*pQueue_p));
+    pQueue_p->m_uCapacity = (MaxEntries_p > SIM_QUEUE_MAX) ? SIM_QUEUE_MAX :
+                            ((MaxEntries_p == 0) ? 1u : (unsigned) MaxEntries_p);
+}
+
+static int SimTxPush (tSimTxQueue* pQueue_p, CONST tSimFrame* pFrame_p)
+{
+    unsigned uAt;
+
+    if (pQueue_p->m_uCount >= pQueue_p->m_uCapacity)
+    {
+        return 0;
+    }
+    uAt = (pQueue_p->m_uHead + pQueue_p->m_uCount) % SIM_QUEUE_MAX;
+    pQueue_p->m_aFrame[uAt] = *pFrame_p;
+    pQueue_p->m_aullQueuedNs[uAt] = ullSimNs_g;
+    pQueue_p->m_uCount++;
+    return 1;
+}
+
+/* The queue whose oldest frame the node offers: high before low. */
+static tSimTxQueue* SimTxHead (tSimNode* pNode_p)
+{
+    if (pNode_p->m_TxHigh.m_uCount > 0)
+    {
+        return &pNode_p->m_TxHigh;
+    }
+    return (pNode_p->m_TxLow.m_uCount > 0) ? &pNode_p->m_TxLow : NULL;
+}
+
+/* Starts the frame that wins arbitration at the first moment the bus is
+ * idle and a frame waits, if that is not after ullUntil_p. */
+static int SimPhysStart (BYTE bBus_p, unsigned long long ullUntil_p)
+{
+    tSimPhysBus* pBus = &aSimPhys_g[bBus_p];
+    tSimTxQueue* apQueue[SIM_MAX_NODES + 1];
+    BYTE abSender[SIM_MAX_NODES + 1];
+    unsigned uOffers = 0;
+    unsigned long long ullFirst = 0;
+    unsigned long long ullStart;
+    tSimTxQueue* pWinner = NULL;
+    BYTE bWinner = SIM_EXTERNAL_NODE;
+    DWORD dwBest = 0;
+    unsigned n;
+    unsigned uBits;
+
+    for (n = 0; n < SIM_MAX_NODES; n++)
+    {
+        if (aSimNode_g[n].m_fUsed && (aSimNode_g[n].m_bBus == bBus_p) &&
+            (SimTxHead(&aSimNode_g[n]) != NULL))
+        {
+            apQueue[uOffers] = SimTxHead(&aSimNode_g[n]);
+            abSender[uOffers++] = (BYTE) n;
+        }
+    }
+    if (pBus->m_Outside.m_uCount > 0)
+    {
+        apQueue[uOffers] = &pBus->m_Outside;
+        abSender[uOffers++] = SIM_EXTERNAL_NODE;
+    }
+    for (n = 0; n < uOffers; n++)
+    {
+        unsigned long long ullQueued = apQueue[n]->m_aullQueuedNs[apQueue[n]->m_uHead];
+
+        if ((n == 0) || (ullQueued < ullFirst))
+        {
+            ullFirst = ullQueued;
+        }
+    }
+    if (uOffers == 0)
+    {
+        return 0;
+    }
+    ullStart = (ullFirst > pBus->m_ullIdleFromNs) ? ullFirst : pBus->m_ullIdleFromNs;
+    if (ullStart > ullUntil_p)
+    {
+        return 0;
+    }
+    /* Offers in node order, the outside last: the first of equal keys wins. */
+    for (n = 0; n < uOffers; n++)
+    {
+        tSimTxQueue* pQueue = apQueue[n];
+        DWORD dwKey = SimArbitrationKey(&pQueue->m_aFrame[pQueue->m_uHead]);
+
+        if ((pQueue->m_aullQueuedNs[pQueue->m_uHead] <= ullStart) && ((pWinner == NULL) || (dwKey < dwBest)))
+        {
+            pWinner = pQueue;
+            bWinner = abSender[n];
+            dwBest = dwKey;
+        }
+    }
+    pBus->m_InFlight = pWinner->m_aFrame[pWinner->m_uHead];
+    pBus->m_InFlight.m_bSender = bWinner;
+    pWinner->m_uHead = (pWinner->m_uHead + 1) % SIM_QUEUE_MAX;
+    pWinner->m_uCount--;
+    uBits = SimFrameBits(&pBus->m_InFlight);
+    pBus->m_uInFlightBits = uBits + SIM_INTERMISSION_BITS;
+    pBus->m_ullEndNs = ullStart + SimBitsNs(pBus, uBits);
+    pBus->m_fInFlight = 1;
+    return 1;
+}
+
+/* Runs bus bBus_p up to ullUntil_p: frames start and arrive. */
+static void SimPhysRun (BYTE bBus_p, unsigned long long ullUntil_p)
+{
+    tSimPhysBus* pBus = &aSimPhys_g[bBus_p];
+
+    for (;;)
+    {
+        if (pBus->m_fInFlight)
+        {
+            if (pBus->m_ullEndNs > ullUntil_p)
+            {
+                break;
+            }
+            pBus->m_fInFlight = 0;
+            pBus->m_ullIdleFromNs = pBus->m_ullEndNs + SimBitsNs(pBus, SIM_INTERMISSION_BITS);
+            pBus->m_Stats.m_ullBits += pBus->m_uInFlightBits;
+            pBus->m_Stats.m_ullBusyNs += SimBitsNs(pBus, pBus->m_uInFlightBits);
+            pBus->m_InFlight.m_dwTick = (DWORD) (pBus->m_ullEndNs / SIM_NS_PER_TICK);
+            pBus->m_InFlight.m_wSubTickUs = (WORD) ((pBus->m_ullEndNs % SIM_NS_PER_TICK) / 1000ULL);
+            (void) SimBus(&pBus->m_InFlight);
+            continue;
+        }
+        if (!SimPhysStart(bBus_p, ullUntil_p))
+        {
+            break;
+        }
+    }
+}
+
+static int SimIsPhysical (BYTE bBus_p)
+{
+    return (bBus_p < SIM_MAX_BUSES) && (aSimPhys_g[bBus_p].m_dwBitRate != 0);
+}
+
+tCopKernel SimSetBitRate (BYTE bBus_p, DWORD dwBitRate_p)
+{
+    tSimPhysBus* pBus;
+    unsigned n;
+
+    if ((bBus_p >= SIM_MAX_BUSES) ||
+        ((dwBitRate_p != 0) && ((dwBitRate_p < SIM_BIT_RATE_MIN) || (dwBitRate_p > SIM_BIT_RATE_MAX))))
+    {
+        return kCopInvalidParam;
+    }
+    pBus = &aSimPhys_g[bBus_p];
+    pBus->m_dwBitRate = dwBitRate_p;
+    pBus->m_fInFlight = 0;
+    pBus->m_ullIdleFromNs = ullSimNs_g;
+    SimTxInit(&pBus->m_Outside, SIM_QUEUE_MAX);
+    for (n = 0; n < SIM_MAX_NODES; n++)
+    {
+        if (aSimNode_g[n].m_bBus == bBus_p)
+        {
+            aSimNode_g[n].m_TxHigh.m_uCount = 0;
+            aSimNode_g[n].m_TxLow.m_uCount = 0;
+        }
+    }
+    return kCopSuccessful;
+}
+
+void SimGetBusStats (BYTE bBus_p, tSimBusStats* pStats_p)
+{
+    if (pStats_p == NULL)
+    {
+        return;
+    }
+    memset(pStats_p, 0, sizeof(*pStats_p));
+    if (bBus_p < SIM_MAX_BUSES)
+    {
+        *pStats_p = aSimPhys_g[bBus_p].m_Stats;
+        pStats_p->m_ullElapsedNs = ullSimNs_g;
+    }
+}
+
+unsigned SimTxPending (BYTE bNode_p)
+{
+    if (bNode_p >= SIM_MAX_NODES)
+    {
+        return 0;
+    }
+    return aSimNode_g[bNode_p].m_TxHigh.m_uCount + aSimNode_g[bNode_p].m_TxLow.m_uCount;
+}
+
+/* ========================================================================== */
 /* Simulation API                                                             */
 /* ========================================================================== */
+
+#if defined(SIM_CAPTURE) && (SIM_CAPTURE != 0)
+/* Host builds: COP_SIM_BIT_RATE (bit/s) puts every bus of every scenario
+ * on the physical model, so an unchanged program runs with bit times. */
+static void SimBitRateFromEnv (void)
+{
+    const char* pszRate = getenv("COP_SIM_BIT_RATE");
+    char* pszEnd = NULL;
+    unsigned long ulRate;
+    BYTE b;
+
+    if ((pszRate == NULL) || (pszRate[0] == '\0'))
+    {
+        return;
+    }
+    ulRate = strtoul(pszRate, &pszEnd, 10);
+    for (b = 0; b < SIM_MAX_BUSES; b++)
+    {
+        if ((*pszEnd != '\0') || (SimSetBitRate(b, (DWORD) ulRate) != kCopSuccessful))
+        {
+            fprintf(stderr, "sim: COP_SIM_BIT_RATE=%s is not a bit rate of 10000 .. 1000000; the bus stays ideal\n", pszRate);
+            return;
+        }
+    }
+}
+#endif
 
 void SimReset (void)
 {
@@ -297,11 +679,14 @@ void SimReset (void)
     fSimCorruptArmed_g = 0;
     memset(abSimBusOfNode_g, 0, sizeof(abSimBusOfNode_g));
     bSimInjectBus_g = 0;
+    memset(aSimPhys_g, 0, sizeof(aSimPhys_g));
+    ullSimNs_g = 0;
 #if (COP_MAX_INSTANCES == 1)
     (void) CopSimSelectInstance(0);
 #endif
 #if defined(SIM_CAPTURE) && (SIM_CAPTURE != 0)
     SimCaptureAtReset();
+    SimBitRateFromEnv();
 #endif
 }
 
@@ -332,6 +717,16 @@ BYTE SimSelectedNode (void)
 
 void SimAdvanceTicks (DWORD dwTicks_p)
 {
+    BYTE b;
+
+    ullSimNs_g += (unsigned long long) dwTicks_p * SIM_NS_PER_TICK;
+    for (b = 0; b < SIM_MAX_BUSES; b++)
+    {
+        if (SimIsPhysical(b))
+        {
+            SimPhysRun(b, ullSimNs_g);
+        }
+    }
     dwSimTicks_g += dwTicks_p;      /* wraps modulo 2^32 like a hardware counter */
 }
 
@@ -363,6 +758,11 @@ int SimInject (DWORD dwId_p, BYTE bRtr_p, BYTE bDlc_p, CONST BYTE* pbData_p)
     }
     Frame.m_bSender = SIM_EXTERNAL_NODE;
     Frame.m_bBus = bSimInjectBus_g;
+    if (SimIsPhysical(Frame.m_bBus))
+    {
+        return SimTxPush(&aSimPhys_g[Frame.m_bBus].m_Outside, &Frame) ? 0 : -1;
+    }
+    Frame.m_dwTick = dwSimTicks_g;
     return SimBus(&Frame);
 }
 
@@ -534,6 +934,8 @@ static tCopKernel SimInitNode (tCdrvInitParam MEM* pInitParam_p, tSimNode** ppNo
     memset(pNode, 0, sizeof(*pNode));
     SimQueueInit(&pNode->m_RxHigh, pInitParam_p->m_RxBuffHigh.m_MaxEntries);
     SimQueueInit(&pNode->m_RxLow, pInitParam_p->m_RxBuffLow.m_MaxEntries);
+    SimTxInit(&pNode->m_TxHigh, pInitParam_p->m_TxBuffHigh.m_MaxEntries);
+    SimTxInit(&pNode->m_TxLow, pInitParam_p->m_TxBuffLow.m_MaxEntries);
     pNode->m_bBus = abSimBusOfNode_g[bSimSelected_g];
     pNode->m_fUsed = 1;
     *ppNode_p = pNode;
@@ -606,6 +1008,14 @@ tCopKernel PUBLIC CdrvReset (MCO_DECL_INSTANCE_PTR_ tCdrvResetCode ResetCode_p)
     {
         pNode->m_Status = kCdrvNoError;
     }
+    if ((ResetCode_p & kResetTxBuffHigh) != 0)
+    {
+        pNode->m_TxHigh.m_uCount = 0;
+    }
+    if ((ResetCode_p & kResetTxBuffLow) != 0)
+    {
+        pNode->m_TxLow.m_uCount = 0;
+    }
     return kCopSuccessful;
 }
 
@@ -666,6 +1076,18 @@ tCopKernel PUBLIC CdrvWriteMsg (MCO_DECL_INSTANCE_PTR_ tCdrvMsg MEM* pCanMsg_p)
     memcpy(Frame.m_abData, pCanMsg_p->m_bData, sizeof(Frame.m_abData));
     Frame.m_bSender = (BYTE) (pNode - aSimNode_g);
     Frame.m_bBus = pNode->m_bBus;
+    if (SimIsPhysical(Frame.m_bBus))
+    {
+        int fHigh = (pCanMsg_p->m_MsgType & kMtbHighPrio) != 0;
+
+        if (!SimTxPush(fHigh ? &pNode->m_TxHigh : &pNode->m_TxLow, &Frame))
+        {
+            aSimPhys_g[Frame.m_bBus].m_Stats.m_ullTxRefused++;
+            return fHigh ? kCopCdrvTxBuffHighOverrun : kCopCdrvTxBuffLowOverrun;
+        }
+        return kCopSuccessful;
+    }
+    Frame.m_dwTick = dwSimTicks_g;
     (void) SimBus(&Frame);
     return kCopSuccessful;
 }

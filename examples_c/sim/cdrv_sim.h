@@ -24,7 +24,9 @@
  *    into the queue that definition asked for (kMtbHighPrio);
  *  - a frame a node sends is on the bus at once: every other node with a
  *    matching filter receives it (a controller does not receive its own
- *    frames), in the order the frames were sent;
+ *    frames), in the order the frames were sent - or, with the physical
+ *    model of a bus (SimSetBitRate), after its transmit buffer, the
+ *    arbitration and its bit time;
  *  - receive timestamps (tCdrvMsg.m_Time, current tick) when the
  *    configuration has CDRV_TIMESTAMP;
  *  - receive overrun: a frame for a full queue is lost and the node's status
@@ -76,6 +78,7 @@ extern "C" {
 #define SIM_QUEUE_MAX     64    /* largest receive queue per priority */
 #define SIM_LOG_MAX       1024  /* frames kept for SimTakeSent */
 #define SIM_EXTERNAL_NODE 0xFF  /* sender of frames put on the bus by SimInject */
+#define SIM_MAX_BUSES     4     /* buses with a physical model and counters */
 
 /* A frame as the bus saw it. */
 typedef struct
@@ -86,8 +89,23 @@ typedef struct
     BYTE  m_abData[8];
     BYTE  m_bSender;        /* node index, or SIM_EXTERNAL_NODE */
     BYTE  m_bBus;           /* the bus it was on (SimSetBus), 0 by default */
-    DWORD m_dwTick;         /* TgtGetTickCount() when it was on the bus */
+    DWORD m_dwTick;         /* TgtGetTickCount() when it was on the bus (a
+                               physical bus: at its end of frame) */
+    WORD  m_wSubTickUs;     /* a physical bus: microseconds of the end of
+                               frame after m_dwTick (0..99); else 0 */
 } tSimFrame;
+
+/* Counters of one bus since SimReset (SimGetBusStats). */
+typedef struct
+{
+    unsigned long long m_ullFrames;     /* frames carried */
+    unsigned long long m_ullBits;       /* their bits, stuff bits and intermission included */
+    unsigned long long m_ullBusyNs;     /* the time the bus carried them (physical bus) */
+    unsigned long long m_ullElapsedNs;  /* the time since SimReset */
+    unsigned long long m_ullTxRefused;  /* CdrvWriteMsg refused by a full transmit buffer (physical bus) */
+    unsigned long long m_ullRxLostHigh; /* frames lost in full high receive buffers, all nodes */
+    unsigned long long m_ullRxLostLow;  /* frames lost in full low receive buffers, all nodes */
+} tSimBusStats;
 
 /* Forgets everything: nodes, queues, filters, log, faults; clock to 0;
  * node 0 selected. Call before CcmInitCANopen of a new scenario. */
@@ -146,11 +164,45 @@ void SimCorruptNextId (DWORD dwId_p, BYTE bXor_p);     /* next frame with this i
 void SimSetBus (BYTE bNode_p, BYTE bBus_p);
 void SimSetInjectBus (BYTE bBus_p);
 
+/* The physical model of bus bBus_p (< SIM_MAX_BUSES), off after SimReset
+ * (the ideal bus above). With a bit rate of 10000 .. 1000000 bit/s:
+ *  - a frame takes its length in bits at that rate: SOF to the end of the
+ *    end of frame field with the stuff bits (ISO 11898-1:2015 10.4.2, 10.5,
+ *    SimFrameBits), then 3 bits of intermission before the next SOF;
+ *  - CdrvWriteMsg queues the frame in the node's high (kMtbHighPrio) or low
+ *    transmit buffer, of the capacity CdrvInit was given (m_TxBuffHigh /
+ *    m_TxBuffLow, at least 1, at most SIM_QUEUE_MAX); a full buffer
+ *    refuses it (kCopCdrvTxBuffHighOverrun / ...LowOverrun). Each node
+ *    offers the oldest frame of its high buffer, else of its low buffer;
+ *  - when the bus is idle the lowest identifier among the offered frames
+ *    wins arbitration (base before extended format with the same base
+ *    identifier, data before remote), the lower node number on a tie,
+ *    frames of SimInject (queued unbounded up to SIM_QUEUE_MAX) last;
+ *  - the frame reaches the receive buffers at the end of its end of frame
+ *    field while SimAdvanceTicks / SimAdvanceMs move the clock: its
+ *    timestamp (m_dwTick, tCdrvMsg.m_Time with CDRV_TIMESTAMP) is the tick
+ *    of that moment, m_wSubTickUs the microseconds after it (captures);
+ *  - SimInject returns 0 for a queued frame (it arrives later).
+ * Set it before the nodes send; 0 makes the bus ideal again and forgets
+ * the frames waiting. In host builds the environment variable
+ * COP_SIM_BIT_RATE (bit/s), read at every SimReset, sets it for every bus,
+ * so an unchanged program runs on the physical model. kCopSuccessful, or kCopInvalidParam for another bit
+ * rate or bus. */
+tCopKernel SimSetBitRate (BYTE bBus_p, DWORD dwBitRate_p);
+
+/* Bits of a frame on the bus from SOF to the end of the end of frame
+ * field, stuff bits included, without the intermission. */
+unsigned SimFrameBits (CONST tSimFrame* pFrame_p);
+
+/* The counters of bus bBus_p (zeros for a bus >= SIM_MAX_BUSES). */
+void SimGetBusStats (BYTE bBus_p, tSimBusStats* pStats_p);
+
 /* Inspection (tests). */
 int      SimIsIdDefined (BYTE bNode_p, DWORD dwId_p); /* 0 undefined, 1 low, 2 high priority */
 unsigned SimRxPending (BYTE bNode_p);                  /* frames waiting in both receive queues */
 WORD     SimGetStatus (BYTE bNode_p);                  /* the node's tCdrvStatus bits */
 unsigned SimRxCapacity (BYTE bNode_p, int fHigh_p);    /* queue capacity from CdrvInit */
+unsigned SimTxPending (BYTE bNode_p);                  /* frames in both transmit buffers (physical bus) */
 
 #ifdef __cplusplus
 }

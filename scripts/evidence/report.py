@@ -160,6 +160,25 @@ def main():
                "(drawn by `tools/srdo_plot`, plotters). The run passes only when each legal pair was "
                "accepted and each late one reported.", "",
                "![SRDO timing](timing.svg)", "", "```", timing.read_text().rstrip(), "```", ""]
+    load = out.parent / "load.md"
+    if load.exists() and (out.parent / "load.png").exists():
+        # The table with receive times from the driver (the first one).
+        lines = load.read_text().splitlines()
+        start = next((i for i, l in enumerate(lines) if l.startswith("| SRDOs")), None)
+        table = []
+        if start is not None:
+            for l in lines[start:]:
+                if not l.startswith("|"):
+                    break
+                table.append(l)
+        md += ["## Load campaign", "",
+               "A master and eight safety nodes on the physical model of the simulated bus (1 Mbit/s, "
+               "arbitration, bit stuffing, receive buffers high 16 / low 10), 45 SRDOs every 10 ms with "
+               "SDO block transfers, SYNC, PDOs and heartbeats, then a sweep past the bus limit "
+               "(`scripts/load.sh`, [docs/load.md](../load.md)). An independent checker judges every "
+               "SRDO alarm from the bus arrival times: correct, false or missed. Receive times from "
+               "the driver (`CDRV_TIMESTAMP`):", "",
+               "![load](../load.png)", ""] + table + [""]
     versions = work / "versions.txt"
     if versions.exists():
         md += ["## Tools", "", "```", versions.read_text().rstrip(), "```", ""]

@@ -187,9 +187,11 @@ impl Capture {
         EPOCH_S * 1_000_000 + self.elapsed_ticks * 100
     }
 
-    /// Writes one frame that was on the bus at `now`.
-    pub(crate) fn record(&mut self, now: Ticks, f: &CanFrame) -> io::Result<()> {
-        let micros = self.micros(now);
+    /// Writes one frame that was on the bus at `now` and `sub_us`
+    /// microseconds (a physical bus: its end of frame within the tick,
+    /// 0..=99; the ideal bus: 0).
+    pub(crate) fn record(&mut self, now: Ticks, sub_us: u64, f: &CanFrame) -> io::Result<()> {
+        let micros = self.micros(now) + sub_us;
         if let Some(w) = self.pcap.as_mut() {
             w.write_all(&pcap_record_header(micros))?;
             w.write_all(&socketcan_record(f))?;

@@ -8,10 +8,10 @@
 //! clause 10.5 and the CRC the one of clause 10.4.2.6. The functions here
 //! only count bits; the queues and the clock live in the bus.
 
-use std::collections::VecDeque;
+use std::collections::{HashMap, VecDeque};
 
 use crate::error::CopKernel;
-use crate::port::{CanFrame, CanId, RxFrame};
+use crate::port::{CanFrame, CanId, Priority, RxFrame};
 
 /// Nanoseconds of one tick (100 µs).
 pub const NS_PER_TICK: u64 = 100_000;
@@ -230,8 +230,10 @@ pub(super) struct NodeQueues {
     pub(super) tx_low: VecDeque<Pending>,
     pub(super) rx_high: VecDeque<RxFrame>,
     pub(super) rx_low: VecDeque<RxFrame>,
-    /// Identifiers the node receives in its high buffer.
-    pub(super) high_ids: Vec<CanId>,
+    /// The identifiers the node receives and the buffer each goes to (the
+    /// driver's identifier filter, `CdrvDefineCanId`): a frame with any
+    /// other identifier never reaches a buffer.
+    pub(super) ids: HashMap<CanId, Priority>,
 }
 
 impl NodeQueues {
