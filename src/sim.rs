@@ -833,10 +833,10 @@ mod tests {
         assert_eq!(st.elapsed_ns, 500_000);
     }
 
-    #[test]
-    fn physical_bus_sends_the_lowest_identifier_first() {
-        let bus = SimBus::with_bit_rate(1_000_000).unwrap();
-        bus.keep_bus_log(true);
+    /// Four nodes; the first three queue a PDO (0x181, 8 bytes), a
+    /// heartbeat (0x705 [05]) and an NMT command (0x000 [01 00], high)
+    /// at the same moment, the fourth receives all three.
+    fn three_senders_and_a_receiver(bus: &SimBus) -> Vec<SimPort> {
         let mut n: Vec<SimPort> = (0..4).map(|_| bus.attach(8)).collect();
         for id in [0x000, 0x181, 0x705] {
             n[3].subscribe(CanId::std_masked(id), Priority::Low)
@@ -847,6 +847,14 @@ mod tests {
         n[1].send(&frame(0x705, &[0x05]), Priority::Low).unwrap();
         n[2].send(&frame(0x000, &[0x01, 0x00]), Priority::High)
             .unwrap();
+        n
+    }
+
+    #[test]
+    fn physical_bus_sends_the_lowest_identifier_first() {
+        let bus = SimBus::with_bit_rate(1_000_000).unwrap();
+        bus.keep_bus_log(true);
+        let mut n = three_senders_and_a_receiver(&bus);
         bus.advance_ms(1);
         let log = bus.take_bus_log();
         let order: Vec<u32> = log.iter().map(|f| f.frame.id.id()).collect();
@@ -876,12 +884,7 @@ mod tests {
         let log = dir.join(format!("cop_sim_phys_{}.log", std::process::id()));
         let bus = SimBus::with_bit_rate(1_000_000).unwrap();
         bus.capture(None, Some(&log)).unwrap();
-        let mut n: Vec<SimPort> = (0..3).map(|_| bus.attach(8)).collect();
-        let data = [0x11, 0x22, 0x33, 0x44, 0x55, 0x66, 0x77, 0x88];
-        n[0].send(&frame(0x181, &data), Priority::Low).unwrap();
-        n[1].send(&frame(0x705, &[0x05]), Priority::Low).unwrap();
-        n[2].send(&frame(0x000, &[0x01, 0x00]), Priority::High)
-            .unwrap();
+        let _n = three_senders_and_a_receiver(&bus);
         bus.advance_ms(1);
         bus.flush_capture().unwrap();
         let text = std::fs::read_to_string(&log).unwrap();
