@@ -2,9 +2,11 @@
 # Load campaign on the physical model of the simulated bus
 # (examples/load_campaign.rs): a master and eight safety nodes at 1 Mbit/s
 # with receive buffers high 16 / low 10, 45 SRDOs every 10 ms, SDO block
-# uploads, SYNC with eight synchronous PDOs, heartbeats; then a sweep of
-# 40 .. 64 SRDOs of 8 bytes past the bus limit. An independent checker
-# judges every SRDO alarm from the bus arrival times.
+# uploads, SYNC with eight synchronous PDOs, heartbeats (and the same with
+# every SRDO due at once, with lost SRDO frames, with low receive buffers
+# too small); then a sweep of 32 .. 64 SRDOs of 4 and of 8 bytes past the
+# bus limit. An independent checker judges every SRDO alarm from the bus
+# arrival times.
 #
 #   scripts/load.sh              10 simulated minutes in both timestamp modes
 #                                (receive time from the driver, CDRV_TIMESTAMP,
@@ -15,7 +17,8 @@
 #                                (the faults stage of scripts/test.sh)
 #
 # Exit code 1 when a run has a false SRDO alarm, or at or below 100 %
-# offered load a lost safety frame or an unreported deadline miss.
+# offered load a lost safety frame, an unreported deadline miss or an SDO
+# error, or when a check run does not show what it checks.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -34,7 +37,7 @@ md=docs/load.md
 {
     echo "# Load campaign"
     echo
-    echo "Written by \`scripts/load.sh\` ($minutes simulated minutes per main run, 20 s per sweep point)."
+    echo "Written by \`scripts/load.sh\` ($minutes simulated minutes per main run, at most 60 s for the check runs, 20 s per sweep point)."
     echo
 } >"$md"
 status=0
