@@ -64,6 +64,14 @@ int main (void)
     TestProcess(1);
     TestExpectFrame("example 3 (read 0x6401/1)", 0x582, 8, abResp3);
 
+    /* A full transmit buffer refuses the answer (kCopCdrvTxBuffLowOverrun):
+     * it goes in a later cycle, once. */
+    SimRefuseTx(0, 1);
+    SimInject(0x602, 0, 8, abReq2);
+    TestProcess(2);
+    TestExpectFrame("example 2 after a refused answer", 0x582, 8, abResp2);
+    CHECK_EQ(SimSentPending(), 0);
+
     SimInject(0x602, 0, 8, abReq4);
     TestProcess(1);
     TestExpectFrame("abort: object 0x6300 does not exist", 0x582, 8, abResp4);
