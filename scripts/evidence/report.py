@@ -160,10 +160,10 @@ def main():
                "(drawn by `tools/srdo_plot`, plotters). The run passes only when each legal pair was "
                "accepted and each late one reported.", "",
                "![SRDO timing](timing.svg)", "", "```", timing.read_text().rstrip(), "```", ""]
-    load = out.parent / "load.md"
-    if load.exists() and (out.parent / "load.png").exists():
+    load_md = out.parent / "load.md"
+    if load_md.exists() and (out.parent / "load.png").exists():
         # The table with receive times from the driver (the first one).
-        lines = load.read_text().splitlines()
+        lines = load_md.read_text().splitlines()
         start = next((i for i, l in enumerate(lines) if l.startswith("| SRDOs")), None)
         table = []
         if start is not None:
