@@ -876,6 +876,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg_attr(miri, ignore = "writes files; Miri runs isolated from the file system")]
     fn physical_capture_has_the_end_of_frame_times() {
         // The frames of physical_bus_sends_the_lowest_identifier_first:
         // ends at 65, 180 and 239 µs. examples_c/sim (c_tests/test_sim.c,
