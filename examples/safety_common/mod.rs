@@ -9,7 +9,7 @@ use cop::CopKernel;
 use cop::ccm::{NmtCommand, Stack};
 use cop::event::Event;
 use cop::od::{Access, ByteOrder, DataType, ObdEntry, ObdSubEntry, ObjectDictionary, decl};
-use cop::port::embedded::{NbPort, TickFn};
+use cop::port::embedded::{NbPort, PlainFrame, TickFn};
 use cop::port::{CanFrame, CanId, CanPort, Priority, Ticks};
 use cop::sim::{SimBus, SimPort};
 use embedded_can::{ExtendedId, Frame, Id, StandardId};
@@ -24,54 +24,8 @@ pub const SRVT_MS: u8 = 20;
 // ---------------------------------------------------------------------
 // The driver: a frame type and an nb::Can, as a HAL crate has them.
 
-/// A classic CAN frame of the "HAL".
-#[derive(Clone, Debug)]
-pub struct HalFrame {
-    id: Id,
-    remote: bool,
-    dlc: usize,
-    data: [u8; 8],
-}
-
-impl Frame for HalFrame {
-    fn new(id: impl Into<Id>, data: &[u8]) -> Option<Self> {
-        let mut d = [0; 8];
-        d.get_mut(..data.len())?.copy_from_slice(data);
-        Some(HalFrame {
-            id: id.into(),
-            remote: false,
-            dlc: data.len(),
-            data: d,
-        })
-    }
-    fn new_remote(id: impl Into<Id>, dlc: usize) -> Option<Self> {
-        (dlc <= 8).then(|| HalFrame {
-            id: id.into(),
-            remote: true,
-            dlc,
-            data: [0; 8],
-        })
-    }
-    fn is_extended(&self) -> bool {
-        matches!(self.id, Id::Extended(_))
-    }
-    fn is_remote_frame(&self) -> bool {
-        self.remote
-    }
-    fn id(&self) -> Id {
-        self.id
-    }
-    fn dlc(&self) -> usize {
-        self.dlc
-    }
-    fn data(&self) -> &[u8] {
-        if self.remote {
-            &[]
-        } else {
-            &self.data[..self.dlc]
-        }
-    }
-}
+/// A classic CAN frame of the "HAL" (the adapter's plain frame type).
+pub type HalFrame = PlainFrame;
 
 /// The driver's error: only "mailbox full" happens on the simulated bus.
 #[derive(Debug)]

@@ -96,6 +96,57 @@ fn full(prio: Priority) -> CopKernel {
     }
 }
 
+/// A classic CAN frame implementing [`embedded_can::Frame`] for code
+/// without a HAL of its own: host programs, tests and examples that put
+/// [`NbPort`] or [`BlockingPort`] over a simulated or scripted driver.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PlainFrame {
+    id: Id,
+    remote: bool,
+    dlc: usize,
+    data: [u8; 8],
+}
+
+impl Frame for PlainFrame {
+    fn new(id: impl Into<Id>, data: &[u8]) -> Option<Self> {
+        let mut d = [0; 8];
+        d.get_mut(..data.len())?.copy_from_slice(data);
+        Some(PlainFrame {
+            id: id.into(),
+            remote: false,
+            dlc: data.len(),
+            data: d,
+        })
+    }
+    fn new_remote(id: impl Into<Id>, dlc: usize) -> Option<Self> {
+        (dlc <= 8).then(|| PlainFrame {
+            id: id.into(),
+            remote: true,
+            dlc,
+            data: [0; 8],
+        })
+    }
+    fn is_extended(&self) -> bool {
+        matches!(self.id, Id::Extended(_))
+    }
+    fn is_remote_frame(&self) -> bool {
+        self.remote
+    }
+    fn id(&self) -> Id {
+        self.id
+    }
+    fn dlc(&self) -> usize {
+        self.dlc
+    }
+    fn data(&self) -> &[u8] {
+        if self.remote {
+            &[]
+        } else {
+            self.data.get(..self.dlc).unwrap_or(&[])
+        }
+    }
+}
+
 /// A [`Clock`] from a plain function returning a free-running counter:
 /// 100 µs ticks ([`TickFn::ticks`]) or milliseconds ([`TickFn::millis`]).
 /// The counter may wrap at 2^32; the stack's tick arithmetic is modular.

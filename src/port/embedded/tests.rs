@@ -5,57 +5,8 @@ use embedded_can::{ErrorKind, ExtendedId, Frame, Id, StandardId};
 
 use super::*;
 
-/// A frame type of a driver (classic CAN, as a HAL defines it).
-#[derive(Clone, Debug, PartialEq, Eq)]
-struct HalFrame {
-    id: Id,
-    remote: bool,
-    dlc: usize,
-    data: [u8; 8],
-}
-
-impl Frame for HalFrame {
-    fn new(id: impl Into<Id>, data: &[u8]) -> Option<Self> {
-        if data.len() > 8 {
-            return None;
-        }
-        let mut d = [0; 8];
-        d[..data.len()].copy_from_slice(data);
-        Some(HalFrame {
-            id: id.into(),
-            remote: false,
-            dlc: data.len(),
-            data: d,
-        })
-    }
-    fn new_remote(id: impl Into<Id>, dlc: usize) -> Option<Self> {
-        (dlc <= 8).then(|| HalFrame {
-            id: id.into(),
-            remote: true,
-            dlc,
-            data: [0; 8],
-        })
-    }
-    fn is_extended(&self) -> bool {
-        matches!(self.id, Id::Extended(_))
-    }
-    fn is_remote_frame(&self) -> bool {
-        self.remote
-    }
-    fn id(&self) -> Id {
-        self.id
-    }
-    fn dlc(&self) -> usize {
-        self.dlc
-    }
-    fn data(&self) -> &[u8] {
-        if self.remote {
-            &[]
-        } else {
-            &self.data[..self.dlc]
-        }
-    }
-}
+/// The frame type of the scripted driver.
+type HalFrame = PlainFrame;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 struct HalError(ErrorKind);
