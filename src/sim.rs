@@ -194,6 +194,37 @@ impl Bus {
         true
     }
 
+    /// A frame on the bus, either model: the fault filter (which may change
+    /// `frame`), the trace, `sent()` and the captures at `time` plus
+    /// `sub_us` microseconds. Returns how many copies the receivers get.
+    fn on_the_bus(&mut self, from: usize, time: Ticks, sub_us: u64, frame: &mut CanFrame) -> usize {
+        let delivery = match self.filter.as_mut() {
+            Some(filter) => filter(from, frame),
+            None => Delivery::Deliver,
+        };
+        let line = candump(frame);
+        if self.echo {
+            println!("{line}");
+        }
+        self.trace.push(line);
+        self.sent.push((from, time, *frame));
+        let copies = match delivery {
+            Delivery::Deliver => 1,
+            Delivery::Drop => 0,
+            Delivery::Duplicate => 2,
+        };
+        if let Some(c) = self.capture.as_mut() {
+            for _ in 0..copies {
+                if let Err(e) = c.record(time, sub_us, frame) {
+                    eprintln!("sim: capture stopped: {e}");
+                    self.capture = None;
+                    break;
+                }
+            }
+        }
+        copies
+    }
+
     /// A frame of a physical bus at its end of frame: the fault filter,
     /// the trace and the captures, then every other node's receive
     /// buffers.
@@ -202,34 +233,10 @@ impl Bus {
             return;
         };
         let time = p.ticks_at(f.end_ns);
-        let origin_ns = p.origin_ns;
+        let sub_us = f.end_ns.saturating_sub(p.origin_ns) % NS_PER_TICK / 1000;
         let model = p.model;
         let mut frame = f.frame;
-        let delivery = match self.filter.as_mut() {
-            Some(filter) => filter(f.from, &mut frame),
-            None => Delivery::Deliver,
-        };
-        let line = candump(&frame);
-        if self.echo {
-            println!("{line}");
-        }
-        self.trace.push(line);
-        self.sent.push((f.from, time, frame));
-        let copies = match delivery {
-            Delivery::Deliver => 1,
-            Delivery::Drop => 0,
-            Delivery::Duplicate => 2,
-        };
-        if let Some(c) = self.capture.as_mut() {
-            for _ in 0..copies {
-                let sub_us = f.end_ns.saturating_sub(origin_ns) % NS_PER_TICK / 1000;
-                if let Err(e) = c.record(time, sub_us, &frame) {
-                    eprintln!("sim: capture stopped: {e}");
-                    self.capture = None;
-                    break;
-                }
-            }
-        }
+        let copies = self.on_the_bus(f.from, time, sub_us, &mut frame);
         if let Some(log) = self.phys.as_mut().and_then(|p| p.log.as_mut()) {
             for _ in 0..copies {
                 log.push(BusFrame { frame, ..f });
@@ -549,31 +556,8 @@ impl SimBus {
 
     fn transmit(&self, from: usize, mut frame: CanFrame) {
         let mut b = self.0.borrow_mut();
-        let delivery = match b.filter.as_mut() {
-            Some(f) => f(from, &mut frame),
-            None => Delivery::Deliver,
-        };
-        let line = candump(&frame);
-        if b.echo {
-            println!("{line}");
-        }
-        b.trace.push(line);
         let now = b.now;
-        b.sent.push((from, now, frame));
-        let copies = match delivery {
-            Delivery::Deliver => 1,
-            Delivery::Drop => 0,
-            Delivery::Duplicate => 2,
-        };
-        if let Some(c) = b.capture.as_mut() {
-            for _ in 0..copies {
-                if let Err(e) = c.record(now, 0, &frame) {
-                    eprintln!("sim: capture stopped: {e}");
-                    b.capture = None;
-                    break;
-                }
-            }
-        }
+        let copies = b.on_the_bus(from, now, 0, &mut frame);
         for (i, n) in b.nodes.iter_mut().enumerate() {
             if i == from {
                 continue;
