@@ -282,18 +282,26 @@ fn receive_overrun_is_reported_before_the_frames() {
     assert_eq!(net.c.seen_in_error, vec![(CopKernel::SrdoOverrun, 0x50)]);
 }
 
-/// On the physical bus with the buffers of a SYS TEC driver configuration
-/// (high 16, low 10): 17 SDO requests to the consumer (node 2) overflow its
-/// low buffer while the SRDO pair behind them waits in the high one, where
-/// the consumer subscribed its COB-IDs. A CAN overrun, not an SRDO error.
-#[test]
-fn physical_bus_low_buffer_overrun_is_no_srdo_alarm() {
+/// Both nodes OPERATIONAL on a physical bus at 1 Mbit/s with the buffers
+/// of a SYS TEC driver configuration (high 16, low 10), their start-up
+/// frames taken.
+fn operational_on_the_physical_bus() -> Net {
     let bus = cop::sim::SimBus::with_bit_rate(1_000_000).unwrap();
     let mut net = Net::preoperational_on(bus, 0);
     net.start();
     net.wait_ms(2);
     net.p.cycle();
     net.c.cycle();
+    net
+}
+
+/// On the physical bus with the buffers of a SYS TEC driver configuration
+/// (high 16, low 10): 17 SDO requests to the consumer (node 2) overflow its
+/// low buffer while the SRDO pair behind them waits in the high one, where
+/// the consumer subscribed its COB-IDs. A CAN overrun, not an SRDO error.
+#[test]
+fn physical_bus_low_buffer_overrun_is_no_srdo_alarm() {
+    let mut net = operational_on_the_physical_bus();
     net.bus.clear_trace();
     for i in 0..17 {
         net.inject(0x602, &[0x40, 0x00, 0x10, 0x00, 0, 0, 0, i]);
@@ -314,12 +322,7 @@ fn physical_bus_low_buffer_overrun_is_no_srdo_alarm() {
 /// overflows and the consumer reports the overrun as an SRDO error.
 #[test]
 fn physical_bus_high_buffer_overrun_is_an_srdo_overrun() {
-    let bus = cop::sim::SimBus::with_bit_rate(1_000_000).unwrap();
-    let mut net = Net::preoperational_on(bus, 0);
-    net.start();
-    net.wait_ms(2);
-    net.p.cycle();
-    net.c.cycle();
+    let mut net = operational_on_the_physical_bus();
     for _ in 0..17 {
         net.inject(0x101, &[1, 0, 2, 0]);
     }
