@@ -707,12 +707,8 @@ impl Stack {
     #[inline(never)] // its frame stays out of poll_work (worst-case stack, docs/tms570.md)
     fn timers(&mut self, port: &mut impl CanPort, now: Ticks) {
         for s in self.sdo.channels_mut() {
-            if let Some(f) = s.take_held() {
-                send_server_frame(s, port, f);
-            }
-            if let Some(f) = s.poll(&self.od, now) {
-                send_server_frame(s, port, f);
-            }
+            let f = s.poll(&self.od, now);
+            send_server_frame(s, port, f);
         }
         self.send_sdo_segments(port, now);
         if self.connected && self.state != NmtState::Initialisation {
@@ -831,11 +827,8 @@ impl Stack {
             let mut hooks = hooks!(self, now);
             let reply = server.on_frame(&self.od, &mut hooks, f, now);
             let changed = hooks.sdo_changed;
-            if let Some(r) = reply {
-                if let Some(older) = server.take_held() {
-                    send_server_frame(server, port, older);
-                }
-                send_server_frame(server, port, r);
+            if reply.is_some() {
+                send_server_frame(server, port, reply);
             }
             self.send_sdo_segments(port, now);
             if changed {
@@ -1138,11 +1131,13 @@ impl Stack {
 #[cfg(test)]
 mod tests;
 
-/// Sends a frame of SDO server `s`. One the driver refuses (a full
-/// transmit buffer), or one that would overtake a frame still waiting, is
-/// kept and goes in the next cycle ([`SdoServer::hold`]).
-fn send_server_frame(s: &mut SdoServer, port: &mut impl CanPort, f: CanFrame) {
-    if s.holding() || port.send(&f, Priority::Low).is_err() {
-        s.hold(f);
+/// Sends the frame SDO server `s` holds, then `f`. One the driver refuses
+/// (a full transmit buffer), or one that would overtake a frame still
+/// waiting, is kept and goes in the next cycle ([`SdoServer::hold`]).
+fn send_server_frame(s: &mut SdoServer, port: &mut impl CanPort, f: Option<CanFrame>) {
+    for f in [s.take_held(), f].into_iter().flatten() {
+        if s.holding() || port.send(&f, Priority::Low).is_err() {
+            s.hold(f);
+        }
     }
 }
